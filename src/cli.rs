@@ -1,0 +1,102 @@
+//! The command line.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(
+    name = "exrcomp",
+    version,
+    about = "Streaming OpenEXR sequence compositor"
+)]
+pub struct Cli {
+    /// Worker threads (default: one per core).
+    #[arg(long, global = true)]
+    pub threads: Option<usize>,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Composite FG over BG: C = Cfg + (1 - Afg) Cbg (premultiplied).
+    Over {
+        /// Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr).
+        fg: String,
+        /// Background: its header, display window and other channels are kept.
+        bg: String,
+        /// Output file or sequence.
+        #[arg(short, long)]
+        output: String,
+        /// Inputs are unpremultiplied (straight) colour.
+        #[arg(long)]
+        straight: bool,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Describe EXR files and check that every chunk decodes.
+    Info {
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+    },
+    /// Generate a synthetic shot and composite it.
+    Demo {
+        /// Where the shot is written.
+        #[arg(long, default_value = "demo-shot")]
+        dir: PathBuf,
+        /// Number of frames.
+        #[arg(long, default_value_t = 24)]
+        length: usize,
+        #[arg(long, default_value_t = 1920)]
+        width: usize,
+        #[arg(long, default_value_t = 1080)]
+        height: usize,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Write synthetic test plates (a grainy background or a moving foreground).
+    Generate {
+        /// Output file or sequence.
+        output: String,
+        #[arg(long, value_enum, default_value = "bg")]
+        kind: crate::generate::PlateKind,
+        #[arg(long, default_value_t = 1920)]
+        width: usize,
+        #[arg(long, default_value_t = 1080)]
+        height: usize,
+        /// Data window origin, as X,Y (display window stays at 0,0).
+        #[arg(long, value_parser = parse_origin, default_value = "0,0")]
+        origin: (i32, i32),
+        /// Sample type of the colour channels.
+        #[arg(long, value_enum, default_value = "half")]
+        pixel_type: crate::generate::PixelType,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+}
+
+/// Options every job that writes files takes.
+#[derive(Args, Clone)]
+pub struct RunArgs {
+    /// Frames: A-B, A-B:STEP, or a comma list (default: those on disk).
+    #[arg(long)]
+    pub frames: Option<String>,
+    /// Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
+    /// (default: the background's).
+    #[arg(long)]
+    pub compression: Option<String>,
+    /// No progress bar and no summary.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Print a JSON summary on standard output at the end.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn parse_origin(text: &str) -> Result<(i32, i32), String> {
+    let (x, y) = text.split_once(',').ok_or("expected X,Y")?;
+    Ok((
+        x.trim().parse().map_err(|_| "bad X")?,
+        y.trim().parse().map_err(|_| "bad Y")?,
+    ))
+}

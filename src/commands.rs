@@ -1,0 +1,265 @@
+//! Each subcommand as a job: resolve frames, check inputs, run, report.
+
+use crate::cli::{Command, RunArgs};
+use crate::engine::graph::{Graph, Node, Op};
+use crate::engine::pipeline;
+use crate::engine::plan::{HeaderBase, Job};
+use crate::error::{Error, Kind, Result};
+use crate::generate::{PixelType, Plate, PlateKind};
+use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
+use crate::ops::over::Over;
+use crate::report::{Report, Summary};
+use exr::prelude::Compression;
+use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+pub fn run(command: Command) -> Result<()> {
+    match command {
+        Command::Over {
+            fg,
+            bg,
+            output,
+            straight,
+            run,
+        } => {
+            let inputs = vec![FramePattern::parse(&fg), FramePattern::parse(&bg)];
+            let graph = Graph {
+                nodes: vec![
+                    Node::Input(0),
+                    Node::Input(1),
+                    Node::Op {
+                        op: Box::new(Over { straight }),
+                        inputs: vec![0, 1],
+                    },
+                ],
+            };
+            let job = input_job(inputs, &output, graph, 1, &run)?;
+            run_job(&job, "over", &run).map(drop)
+        }
+        Command::Info { files } => info(&files),
+        Command::Demo {
+            dir,
+            length,
+            width,
+            height,
+            run,
+        } => demo(&dir, length, width, height, &run),
+        Command::Generate {
+            output,
+            kind,
+            width,
+            height,
+            origin,
+            pixel_type,
+            run,
+        } => {
+            let plate = Plate {
+                kind,
+                width,
+                height,
+                origin,
+                pixel_type,
+            };
+            let output = FramePattern::parse(&output);
+            let frames = match &run.frames {
+                Some(text) => parse_frame_list(text)?,
+                None => vec![1],
+            };
+            check_frame_count(&frames, &output)?;
+            let job = plate_job(plate, output, frames, &run)?;
+            run_job(&job, "generate", &run).map(drop)
+        }
+    }
+}
+
+/// A job over input sequences; the header comes from input `header_from`.
+fn input_job(
+    inputs: Vec<FramePattern>,
+    output: &str,
+    graph: Graph,
+    header_from: usize,
+    run: &RunArgs,
+) -> Result<Job> {
+    let output = FramePattern::parse(output);
+    let frames = match &run.frames {
+        Some(text) => parse_frame_list(text)?,
+        None if inputs[0].is_sequence() => {
+            let found = inputs[0].frames_on_disk()?;
+            if found.is_empty() {
+                return Err(Error::new(
+                    Kind::Input,
+                    format!("no frames of {} found", inputs[0].display()),
+                ));
+            }
+            found
+        }
+        None => vec![1],
+    };
+    check_frame_count(&frames, &output)?;
+    for input in &inputs {
+        if (0..frames.len()).any(|i| input.path(frames[i]) == output.path(frames[i])) {
+            return Err(Error::usage(format!(
+                "the output {} would overwrite an input",
+                output.display()
+            )));
+        }
+        let missing: Vec<i64> = frames
+            .iter()
+            .copied()
+            .filter(|&f| !input.path(f).exists())
+            .collect();
+        if !missing.is_empty() {
+            let what = if input.is_sequence() {
+                format!("missing frames {}", format_frame_list(&missing))
+            } else {
+                "no such file".to_string()
+            };
+            return Err(Error::new(
+                Kind::Input,
+                format!("{}: {what}", input.display()),
+            ));
+        }
+    }
+    Ok(Job {
+        inputs,
+        output,
+        frames,
+        graph,
+        compression: parse_compression(run)?,
+        header_base: HeaderBase::Input(header_from),
+    })
+}
+
+fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
+    if frames.len() > 1 && !output.is_sequence() {
+        return Err(Error::usage(format!(
+            "{} frames but the output {} has no frame number (use #### or %04d)",
+            frames.len(),
+            output.display()
+        )));
+    }
+    Ok(())
+}
+
+fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
+    let display = plate.display_window();
+    Ok(Job {
+        inputs: Vec::new(),
+        output,
+        frames,
+        graph: Graph {
+            nodes: vec![Node::Op {
+                op: Box::new(plate) as Box<dyn Op>,
+                inputs: Vec::new(),
+            }],
+        },
+        compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
+        header_base: HeaderBase::New(display),
+    })
+}
+
+fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
+    let Some(name) = &run.compression else {
+        return Ok(None);
+    };
+    Ok(Some(match name.to_ascii_lowercase().as_str() {
+        "none" => Compression::Uncompressed,
+        "rle" => Compression::RLE,
+        "zips" => Compression::ZIP1,
+        "zip" => Compression::ZIP16,
+        "piz" => Compression::PIZ,
+        "pxr24" => Compression::PXR24,
+        "b44" => Compression::B44,
+        "b44a" => Compression::B44A,
+        "dwaa" => Compression::DWAA(None),
+        "dwab" => Compression::DWAB(None),
+        other => {
+            return Err(Error::usage(format!(
+                "unknown compression '{other}' (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab)"
+            )))
+        }
+    }))
+}
+
+fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<Summary> {
+    let report = Report::new(label, job.frames.len(), run.quiet, run.json);
+    let pixels = AtomicU64::new(0);
+    pipeline::run(job, |plan| {
+        pixels.fetch_add(plan.pixels() as u64, Ordering::Relaxed);
+        report.frame_done();
+    })?;
+    let summary = Summary {
+        frames: job.frames.len(),
+        pixels: pixels.into_inner(),
+        seconds: report.elapsed(),
+    };
+    report.finish(&summary);
+    Ok(summary)
+}
+
+fn info(files: &[std::path::PathBuf]) -> Result<()> {
+    let mut first_error = None;
+    for path in files {
+        match crate::info::describe(path) {
+            Ok(text) => print!("{text}"),
+            Err(e) => {
+                eprintln!("exrcomp: error: {e}");
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    first_error.map_or(Ok(()), Err)
+}
+
+/// Writes a synthetic foreground and background sequence into `dir`, then
+/// composites them and reports the speed of the composite.
+fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
+    let first = 1001;
+    let frames: Vec<i64> = (first..first + length as i64).collect();
+    let quiet_run = RunArgs {
+        frames: None,
+        compression: run.compression.clone(),
+        quiet: run.quiet || run.json,
+        json: false,
+    };
+    let pattern = |name: &str| {
+        dir.join(format!("{name}.####.exr"))
+            .to_string_lossy()
+            .into_owned()
+    };
+    for (name, kind) in [("fg", PlateKind::Fg), ("bg", PlateKind::Bg)] {
+        let plate = Plate {
+            kind,
+            width,
+            height,
+            origin: (0, 0),
+            pixel_type: PixelType::Half,
+        };
+        let job = plate_job(
+            plate,
+            FramePattern::parse(&pattern(name)),
+            frames.clone(),
+            &quiet_run,
+        )?;
+        run_job(&job, &format!("writing {name}"), &quiet_run)?;
+    }
+    let over = RunArgs {
+        frames: Some(format!("{first}-{}", first + length as i64 - 1)),
+        ..run.clone()
+    };
+    if !run.quiet && !run.json {
+        eprintln!(
+            "compositing {} over {} into {}",
+            pattern("fg"),
+            pattern("bg"),
+            pattern("comp")
+        );
+    }
+    self::run(Command::Over {
+        fg: pattern("fg"),
+        bg: pattern("bg"),
+        output: pattern("comp"),
+        straight: false,
+        run: over,
+    })
+}

@@ -1,0 +1,154 @@
+//! Turns an input file's chunks into strips of rows in the output's columns:
+//! chunks are decompressed in parallel, each exactly once, and their mapped
+//! pages are released as soon as the rows are copied out.
+
+use super::strip::Rows;
+use crate::error::Result;
+use crate::io::reader::ExrFile;
+use exr::block::UncompressedBlock;
+use exr::meta::attribute::IntegerBounds;
+use rayon::prelude::*;
+use std::ops::Range;
+use std::sync::Arc;
+
+/// Reads one input of a frame, strip after strip, top to bottom.
+pub struct InputCursor {
+    pub file: Arc<ExrFile>,
+    pub part: usize,
+    /// The last decoded chunk, kept when it reaches into the next strip.
+    carried: Option<(usize, UncompressedBlock)>,
+    /// Chunks below this index have been copied out and released.
+    released: usize,
+}
+
+impl InputCursor {
+    pub fn new(file: Arc<ExrFile>, part: usize) -> Self {
+        InputCursor {
+            file,
+            part,
+            carried: None,
+            released: 0,
+        }
+    }
+
+    fn data_window(&self) -> IntegerBounds {
+        self.file.header(self.part).data_window()
+    }
+
+    fn lines_per_chunk(&self) -> usize {
+        self.file
+            .header(self.part)
+            .compression
+            .scan_lines_per_block()
+    }
+
+    /// Chunk indices holding rows `rows` (absolute), clipped to the data window.
+    fn chunks_for(&self, rows: &Range<i32>) -> Range<usize> {
+        let w = self.data_window();
+        let (top, bottom) = (w.position.y(), w.end().y());
+        let (start, end) = (rows.start.max(top), rows.end.min(bottom));
+        if start >= end {
+            return 0..0;
+        }
+        let lines = self.lines_per_chunk();
+        (start - top) as usize / lines..(end - 1 - top) as usize / lines + 1
+    }
+}
+
+/// Decodes rows `rows` of every input into strips covering `columns`
+/// (x, width): zeros where an input has no data.
+pub fn decode_strip(
+    inputs: &mut [InputCursor],
+    columns: (i32, usize),
+    rows: Range<i32>,
+) -> Result<Vec<Rows>> {
+    let jobs: Vec<(usize, usize)> = inputs
+        .iter()
+        .enumerate()
+        .flat_map(|(i, input)| {
+            let carried = input.carried.as_ref().map(|(k, _)| *k);
+            input
+                .chunks_for(&rows)
+                .filter(move |&k| Some(k) != carried)
+                .map(move |k| (i, k))
+        })
+        .collect();
+    let decoded: Vec<(usize, usize, UncompressedBlock)> = jobs
+        .par_iter()
+        .map(|&(i, k)| Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?)))
+        .collect::<Result<_>>()?;
+
+    let mut strips: Vec<Rows> = inputs
+        .iter()
+        .map(|input| {
+            let header = input.file.header(input.part);
+            Rows::zeros(
+                columns.0,
+                rows.start,
+                columns.1,
+                (rows.end - rows.start) as usize,
+                header.channels.list.to_vec(),
+                input.data_window(),
+            )
+        })
+        .collect();
+
+    let mut blocks: Vec<Vec<(usize, UncompressedBlock)>> = inputs
+        .iter_mut()
+        .map(|input| input.carried.take().into_iter().collect())
+        .collect();
+    for (i, k, block) in decoded {
+        blocks[i].push((k, block));
+    }
+    for (i, input) in inputs.iter_mut().enumerate() {
+        let window = input.data_window();
+        for (_, block) in &blocks[i] {
+            copy_block(block, window, &mut strips[i], &rows);
+        }
+        // The last chunk may hold rows of the next strip: keep it decoded.
+        let needed = input.chunks_for(&rows);
+        let window_end = window.end().y();
+        if let Some(last) = blocks[i].drain(..).max_by_key(|(k, _)| *k) {
+            let block_end = window.position.y()
+                + (last.1.index.pixel_position.y() + last.1.index.pixel_size.y()) as i32;
+            if block_end > rows.end && rows.end < window_end {
+                input.carried = Some(last);
+            }
+        }
+        let done = match &input.carried {
+            Some((k, _)) => *k,
+            None => needed.end,
+        };
+        if done > input.released {
+            input.file.release_chunks(input.part, input.released..done);
+            input.released = done;
+        }
+    }
+    Ok(strips)
+}
+
+/// Copies the lines of `block` that fall in `rows` into `strip`.
+fn copy_block(
+    block: &UncompressedBlock,
+    window: IntegerBounds,
+    strip: &mut Rows,
+    rows: &Range<i32>,
+) {
+    let width = block.index.pixel_size.x();
+    let block_top = window.position.y() + block.index.pixel_position.y() as i32;
+    let column = (window.position.x() + block.index.pixel_position.x() as i32 - strip.x) as usize;
+    let mut offset = 0;
+    for line in 0..block.index.pixel_size.y() {
+        let y = block_top + line as i32;
+        for (c, channel) in strip.channels.iter().enumerate() {
+            let bytes = width * channel.sample_type.bytes_per_sample();
+            if rows.contains(&y) {
+                let start = strip.row_range(y).start + column;
+                strip.planes[c]
+                    .bytes_mut(start..start + width)
+                    .copy_from_slice(&block.data[offset..offset + bytes]);
+            }
+            offset += bytes;
+        }
+    }
+}

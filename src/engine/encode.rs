@@ -1,0 +1,66 @@
+//! Output strips to compressed chunks, one block per task, in parallel.
+
+use super::strip::Rows;
+use crate::error::{Error, Result};
+use exr::block::chunk::Chunk;
+use exr::block::{BlockIndex, UncompressedBlock};
+use exr::math::Vec2;
+use exr::meta::header::Header;
+use rayon::prelude::*;
+
+/// A compressed block and its index in the output's offset table.
+pub struct IndexedChunk {
+    pub index: usize,
+    pub chunk: Chunk,
+}
+
+/// Compresses `rows` (which start on a block boundary of `header`'s data
+/// window) into chunks.
+pub fn encode_rows(rows: &Rows, header: &Header) -> Result<Vec<IndexedChunk>> {
+    let window = header.data_window();
+    let lines = header.compression.scan_lines_per_block();
+    let first_row = (rows.y - window.position.y()) as usize;
+    debug_assert_eq!(first_row % lines, 0, "strips start on block boundaries");
+    // Planes in the header's (sorted) channel order.
+    let planes: Vec<usize> = header
+        .channels
+        .list
+        .iter()
+        .map(|c| {
+            rows.channel_index(&c.name.to_string())
+                .expect("output channel present")
+        })
+        .collect();
+    let headers = std::slice::from_ref(header);
+    (0..rows.height.div_ceil(lines))
+        .into_par_iter()
+        .map(|b| {
+            let y0 = rows.y + (b * lines) as i32;
+            let y1 = (y0 + lines as i32).min(rows.end());
+            let mut data = Vec::with_capacity(
+                rows.width * (y1 - y0) as usize * header.channels.bytes_per_pixel,
+            );
+            for y in y0..y1 {
+                for &p in &planes {
+                    data.extend_from_slice(rows.planes[p].bytes(rows.row_range(y)));
+                }
+            }
+            let block = UncompressedBlock {
+                index: BlockIndex {
+                    layer: 0,
+                    pixel_position: Vec2(0, first_row + b * lines),
+                    pixel_size: Vec2(rows.width, (y1 - y0) as usize),
+                    level: Vec2(0, 0),
+                },
+                data,
+            };
+            let chunk = block
+                .compress_to_chunk(headers)
+                .map_err(|e| Error::internal(format!("cannot compress block: {e}")))?;
+            Ok(IndexedChunk {
+                index: first_row / lines + b,
+                chunk,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,93 @@
+//! The node graph a job runs: inputs, operations, and the node that is written.
+
+use super::strip::Rows;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+
+/// An operation over strips of rows. Implementations are pure: the output rows
+/// depend only on the input rows they are given.
+pub trait Op: Send + Sync {
+    /// Rows above and below an output row that the op reads from its inputs.
+    fn halo(&self) -> usize {
+        0
+    }
+
+    /// The output's channels, given each input's channels.
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription>;
+
+    /// The output's data window, given each input's.
+    fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+        inputs
+            .iter()
+            .copied()
+            .reduce(union)
+            .expect("an operation has inputs")
+    }
+
+    /// Fills `out` (its rows, columns and channels are set; samples are zero)
+    /// for frame `frame`. Each input holds at least rows
+    /// `out.y - halo .. out.end() + halo`, clipped to the output's data
+    /// window, in the same columns as `out`. An op without inputs is a source.
+    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows);
+}
+
+pub enum Node {
+    /// The n-th input sequence of the job.
+    Input(usize),
+    /// An operation on earlier nodes.
+    Op { op: Box<dyn Op>, inputs: Vec<usize> },
+}
+
+/// Nodes in topological order: a node refers only to nodes before it. The last
+/// node is the one written.
+pub struct Graph {
+    pub nodes: Vec<Node>,
+}
+
+impl Graph {
+    pub fn input_count(&self) -> usize {
+        self.nodes
+            .iter()
+            .filter(|n| matches!(n, Node::Input(_)))
+            .count()
+    }
+
+    pub fn output(&self) -> usize {
+        self.nodes.len() - 1
+    }
+
+    pub fn halo(&self, node: usize) -> usize {
+        match &self.nodes[node] {
+            Node::Input(_) => 0,
+            Node::Op { op, .. } => op.halo(),
+        }
+    }
+
+    /// Per node, a value computed from its inputs' values: `input` for input
+    /// nodes, `combine(op, values of its inputs)` for operations.
+    pub fn evaluate<T: Clone>(
+        &self,
+        input: impl Fn(usize) -> T,
+        combine: impl Fn(&dyn Op, &[T]) -> T,
+    ) -> Vec<T> {
+        let mut values: Vec<T> = Vec::with_capacity(self.nodes.len());
+        for node in &self.nodes {
+            let value = match node {
+                Node::Input(i) => input(*i),
+                Node::Op { op, inputs } => {
+                    let args: Vec<T> = inputs.iter().map(|&n| values[n].clone()).collect();
+                    combine(op.as_ref(), &args)
+                }
+            };
+            values.push(value);
+        }
+        values
+    }
+}
+
+pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
+    let x0 = a.position.x().min(b.position.x());
+    let y0 = a.position.y().min(b.position.y());
+    let x1 = a.end().x().max(b.end().x());
+    let y1 = a.end().y().max(b.end().y());
+    IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+}

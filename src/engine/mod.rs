@@ -1,0 +1,9 @@
+//! The streaming engine: a graph of nodes evaluated strip by strip.
+
+pub mod compose;
+pub mod decode;
+pub mod encode;
+pub mod graph;
+pub mod pipeline;
+pub mod plan;
+pub mod strip;

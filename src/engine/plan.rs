@@ -1,0 +1,172 @@
+//! What one frame of a job needs: its open inputs, each node's channels and
+//! data window, the output header, and the strip height.
+
+use super::graph::Graph;
+use crate::error::Result;
+use crate::io::reader::ExrFile;
+use crate::io::sequence::FramePattern;
+use exr::meta::attribute::Text;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
+use exr::meta::header::{Header, LayerAttributes};
+use exr::meta::BlockDescription;
+use exr::prelude::Compression;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// Raw output bytes a strip aims for: big enough to amortise per-strip work,
+/// small enough that the strips in flight stay a few megabytes.
+const STRIP_BYTES: usize = 1 << 20;
+
+/// A job: input sequences through a graph into an output sequence.
+pub struct Job {
+    pub inputs: Vec<FramePattern>,
+    pub output: FramePattern,
+    pub frames: Vec<i64>,
+    pub graph: Graph,
+    /// Output compression; `None` keeps that of the input the header comes from.
+    pub compression: Option<Compression>,
+    pub header_base: HeaderBase,
+}
+
+/// Where the output header's attributes come from.
+pub enum HeaderBase {
+    /// The header of this input (the background, for merges).
+    Input(usize),
+    /// A new header with this display window (for generated images).
+    New(IntegerBounds),
+}
+
+impl Job {
+    /// Frame numbers appear in messages only for sequences.
+    pub fn frame_label(&self, frame: i64) -> Option<i64> {
+        let sequence = self.output.is_sequence() || self.inputs.iter().any(|p| p.is_sequence());
+        sequence.then_some(frame)
+    }
+}
+
+pub struct FramePlan {
+    pub frame: i64,
+    pub label: Option<i64>,
+    pub output: PathBuf,
+    pub inputs: Vec<Arc<ExrFile>>,
+    pub header: Header,
+    /// Per node: channels and data window.
+    pub channels: Vec<Vec<ChannelDescription>>,
+    pub windows: Vec<IntegerBounds>,
+    pub strip_rows: usize,
+}
+
+impl FramePlan {
+    pub fn window(&self) -> IntegerBounds {
+        self.header.data_window()
+    }
+
+    pub fn pixels(&self) -> usize {
+        self.window().size.area()
+    }
+
+    /// The row ranges of the strips, top to bottom.
+    pub fn strips(&self) -> impl Iterator<Item = std::ops::Range<i32>> {
+        let (top, bottom) = (self.window().position.y(), self.window().end().y());
+        let step = self.strip_rows as i32;
+        (top..bottom)
+            .step_by(self.strip_rows)
+            .map(move |y| y..(y + step).min(bottom))
+    }
+}
+
+/// Opens the inputs of `frame` and plans its output.
+pub fn plan_frame(job: &Job, frame: i64) -> Result<FramePlan> {
+    let label = job.frame_label(frame);
+    let inputs: Vec<Arc<ExrFile>> = job
+        .inputs
+        .iter()
+        .map(|pattern| {
+            let file = ExrFile::open(&pattern.path(frame), label)?;
+            check_readable(&file)?;
+            Ok(Arc::new(file))
+        })
+        .collect::<Result<_>>()?;
+
+    let graph: &Graph = &job.graph;
+    let channels = graph.evaluate(
+        |i| inputs[i].header(0).channels.list.to_vec(),
+        |op, args| {
+            let lists: Vec<&[ChannelDescription]> = args.iter().map(Vec::as_slice).collect();
+            op.channels(&lists)
+        },
+    );
+    let windows = graph.evaluate(
+        |i| inputs[i].header(0).data_window(),
+        |op, args| op.data_window(args),
+    );
+    let window = windows[graph.output()];
+
+    let mut header = match job.header_base {
+        HeaderBase::Input(i) => inputs[i].header(0).clone(),
+        HeaderBase::New(display) => {
+            Header::new(Text::from("image"), display.size, Default::default())
+                .with_display_window(display)
+                .with_attributes(LayerAttributes::default())
+        }
+    };
+    let mut output_channels = channels[graph.output()].clone();
+    output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
+    header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
+    if let Some(compression) = job.compression {
+        header.compression = compression;
+    }
+    header.blocks = BlockDescription::ScanLines;
+    header.line_order = LineOrder::Increasing;
+    header.layer_size = window.size;
+    header.own_attributes.layer_position = window.position;
+    header.chunk_count = window
+        .size
+        .height()
+        .div_ceil(header.compression.scan_lines_per_block());
+
+    let lines = header.compression.scan_lines_per_block();
+    let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
+    let blocks = STRIP_BYTES
+        .div_ceil(block_bytes.max(1))
+        .max(rayon::current_num_threads());
+    Ok(FramePlan {
+        frame,
+        label,
+        output: job.output.path(frame),
+        inputs,
+        header,
+        channels,
+        windows,
+        strip_rows: blocks * lines,
+    })
+}
+
+/// What the engine reads today: the first part, flat scanlines, no subsampling.
+fn check_readable(file: &ExrFile) -> Result<()> {
+    let header = file.header(0);
+    if header.deep {
+        return Err(file.error("deep data cannot be composited (flatten it first)"));
+    }
+    if let BlockDescription::Tiles(_) = header.blocks {
+        return Err(file.error("tiled files are not supported yet: convert to scanlines first"));
+    }
+    if let Some(c) = header
+        .channels
+        .list
+        .iter()
+        .find(|c| c.sampling.x() != 1 || c.sampling.y() != 1)
+    {
+        return Err(file.error(format!(
+            "channel {} is subsampled, which is not supported",
+            c.name
+        )));
+    }
+    if matches!(
+        header.compression,
+        Compression::HTJ2K32 | Compression::HTJ2K256
+    ) {
+        return Err(file.error("HTJ2K compression is not supported"));
+    }
+    Ok(())
+}

@@ -1,0 +1,234 @@
+//! A band of whole rows of one image: one typed plane per channel.
+
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
+use half::f16;
+use half::slice::HalfFloatSliceExt;
+use std::ops::Range;
+
+/// Samples of one channel, row-major, in the channel's own type so that
+/// pass-through channels stay bit-exact.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Samples {
+    F16(Vec<f16>),
+    F32(Vec<f32>),
+    U32(Vec<u32>),
+}
+
+impl Samples {
+    pub fn zeros(kind: SampleType, len: usize) -> Self {
+        match kind {
+            SampleType::F16 => Samples::F16(vec![f16::ZERO; len]),
+            SampleType::F32 => Samples::F32(vec![0.0; len]),
+            SampleType::U32 => Samples::U32(vec![0; len]),
+        }
+    }
+
+    pub fn kind(&self) -> SampleType {
+        match self {
+            Samples::F16(_) => SampleType::F16,
+            Samples::F32(_) => SampleType::F32,
+            Samples::U32(_) => SampleType::U32,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Samples::F16(v) => v.len(),
+            Samples::F32(v) => v.len(),
+            Samples::U32(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Converts `range` to f32 into `out`.
+    pub fn read_f32(&self, range: Range<usize>, out: &mut [f32]) {
+        match self {
+            Samples::F16(v) => v[range].convert_to_f32_slice(out),
+            Samples::F32(v) => out.copy_from_slice(&v[range]),
+            Samples::U32(v) => out
+                .iter_mut()
+                .zip(&v[range])
+                .for_each(|(o, &s)| *o = s as f32),
+        }
+    }
+
+    /// Stores f32 values into `range`, rounding to the plane's type
+    /// (half: round to nearest even; u32: saturating, NaN to 0).
+    pub fn write_f32(&mut self, range: Range<usize>, values: &[f32]) {
+        match self {
+            Samples::F16(v) => v[range].convert_from_f32_slice(values),
+            Samples::F32(v) => v[range].copy_from_slice(values),
+            Samples::U32(v) => v[range]
+                .iter_mut()
+                .zip(values)
+                .for_each(|(o, &s)| *o = s as u32),
+        }
+    }
+
+    /// The native-endian bytes of `range`.
+    pub fn bytes(&self, range: Range<usize>) -> &[u8] {
+        match self {
+            Samples::F16(v) => bytemuck::cast_slice(&v[range]),
+            Samples::F32(v) => bytemuck::cast_slice(&v[range]),
+            Samples::U32(v) => bytemuck::cast_slice(&v[range]),
+        }
+    }
+
+    pub fn bytes_mut(&mut self, range: Range<usize>) -> &mut [u8] {
+        match self {
+            Samples::F16(v) => bytemuck::cast_slice_mut(&mut v[range]),
+            Samples::F32(v) => bytemuck::cast_slice_mut(&mut v[range]),
+            Samples::U32(v) => bytemuck::cast_slice_mut(&mut v[range]),
+        }
+    }
+
+    /// Appends the samples of `other`, which must be of the same type.
+    fn extend(&mut self, other: &Samples) {
+        match (self, other) {
+            (Samples::F16(a), Samples::F16(b)) => a.extend_from_slice(b),
+            (Samples::F32(a), Samples::F32(b)) => a.extend_from_slice(b),
+            (Samples::U32(a), Samples::U32(b)) => a.extend_from_slice(b),
+            _ => panic!("appending planes of different sample types"),
+        }
+    }
+
+    fn drop_front(&mut self, count: usize) {
+        match self {
+            Samples::F16(v) => drop(v.drain(..count)),
+            Samples::F32(v) => drop(v.drain(..count)),
+            Samples::U32(v) => drop(v.drain(..count)),
+        }
+    }
+}
+
+/// Rows `y .. y + height` of an image, `width` pixels from column `x`.
+#[derive(Clone, Debug)]
+pub struct Rows {
+    pub x: i32,
+    pub y: i32,
+    pub width: usize,
+    pub height: usize,
+    pub channels: Vec<ChannelDescription>,
+    pub planes: Vec<Samples>,
+    /// Where the image has data; outside it every channel is transparent black
+    /// (and alpha is 0 even when the image has no alpha channel).
+    pub valid: IntegerBounds,
+}
+
+impl Rows {
+    pub fn zeros(
+        x: i32,
+        y: i32,
+        width: usize,
+        height: usize,
+        channels: Vec<ChannelDescription>,
+        valid: IntegerBounds,
+    ) -> Self {
+        let planes = channels
+            .iter()
+            .map(|c| Samples::zeros(c.sample_type, width * height))
+            .collect();
+        Rows {
+            x,
+            y,
+            width,
+            height,
+            channels,
+            planes,
+            valid,
+        }
+    }
+
+    pub fn end(&self) -> i32 {
+        self.y + self.height as i32
+    }
+
+    pub fn channel_index(&self, name: &str) -> Option<usize> {
+        self.channels.iter().position(|c| c.name.eq(name))
+    }
+
+    /// Sample index range of absolute row `y`.
+    pub fn row_range(&self, y: i32) -> Range<usize> {
+        debug_assert!(
+            y >= self.y && y < self.end(),
+            "row {y} outside {}..{}",
+            self.y,
+            self.end()
+        );
+        let start = (y - self.y) as usize * self.width;
+        start..start + self.width
+    }
+
+    /// Alpha of absolute row `y` as f32: the A channel, or, without one,
+    /// 1 inside the valid window and 0 outside it.
+    pub fn alpha_f32(&self, y: i32, out: &mut [f32]) {
+        match self.channel_index("A") {
+            Some(a) => self.planes[a].read_f32(self.row_range(y), out),
+            None => {
+                let v = self.valid;
+                let inside_row = y >= v.position.y() && y < v.end().y();
+                for (i, o) in out.iter_mut().enumerate() {
+                    let x = self.x + i as i32;
+                    let inside = inside_row && x >= v.position.x() && x < v.end().x();
+                    *o = if inside { 1.0 } else { 0.0 };
+                }
+            }
+        }
+    }
+
+    /// Appends the rows of `below`, which must start at `self.end()` and have
+    /// the same columns and channels.
+    pub fn append(&mut self, below: Rows) {
+        assert_eq!(below.y, self.end(), "rows must be appended in order");
+        assert_eq!(below.width, self.width);
+        if self.height == 0 {
+            self.planes = below.planes;
+        } else {
+            for (plane, other) in self.planes.iter_mut().zip(&below.planes) {
+                plane.extend(other);
+            }
+        }
+        self.height += below.height;
+    }
+
+    /// Forgets the rows above `y`.
+    pub fn drop_rows_before(&mut self, y: i32) {
+        let count = (y.clamp(self.y, self.end()) - self.y) as usize;
+        if count == 0 {
+            return;
+        }
+        for plane in &mut self.planes {
+            plane.drop_front(count * self.width);
+        }
+        self.y += count as i32;
+        self.height -= count;
+    }
+
+    /// A copy of rows `range` (absolute).
+    pub fn copy_rows(&self, range: Range<i32>) -> Rows {
+        let start = self.row_range(range.start).start;
+        let len = (range.end - range.start) as usize * self.width;
+        let planes = self
+            .planes
+            .iter()
+            .map(|p| {
+                let mut out = Samples::zeros(p.kind(), len);
+                out.bytes_mut(0..len)
+                    .copy_from_slice(p.bytes(start..start + len));
+                out
+            })
+            .collect();
+        Rows {
+            x: self.x,
+            y: range.start,
+            width: self.width,
+            height: (range.end - range.start) as usize,
+            channels: self.channels.clone(),
+            planes,
+            valid: self.valid,
+        }
+    }
+}

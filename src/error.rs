@@ -1,0 +1,84 @@
+//! One error type for the whole program; its kind decides the exit code.
+
+use std::fmt;
+use std::path::Path;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Bad command line or job description.
+    Usage,
+    /// An input file is missing, damaged or unsupported.
+    Input,
+    /// An output could not be written.
+    Output,
+    /// A bug: an invariant of exrcomp itself broke.
+    Internal,
+    /// A pipeline stage stopped because another one failed; that one reports.
+    Stopped,
+}
+
+impl Kind {
+    /// Exit codes, as documented in the README.
+    pub fn exit_code(self) -> i32 {
+        match self {
+            Kind::Internal | Kind::Stopped => 1,
+            Kind::Usage => 2,
+            Kind::Input => 3,
+            Kind::Output => 4,
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Error {
+    pub kind: Kind,
+    pub message: String,
+}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+impl Error {
+    pub fn new(kind: Kind, message: impl Into<String>) -> Self {
+        Error {
+            kind,
+            message: message.into(),
+        }
+    }
+
+    pub fn usage(message: impl Into<String>) -> Self {
+        Self::new(Kind::Usage, message)
+    }
+
+    pub fn internal(message: impl Into<String>) -> Self {
+        Self::new(Kind::Internal, message)
+    }
+
+    pub fn stopped() -> Self {
+        Self::new(Kind::Stopped, "stopped because another stage failed")
+    }
+
+    /// An input problem, naming the file and, for sequences, the frame.
+    pub fn input(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> Self {
+        Self::new(Kind::Input, located(path, frame, message))
+    }
+
+    /// An output problem, naming the file and, for sequences, the frame.
+    pub fn output(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> Self {
+        Self::new(Kind::Output, located(path, frame, message))
+    }
+}
+
+fn located(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> String {
+    match frame {
+        Some(frame) => format!("{} (frame {frame}): {message}", path.display()),
+        None => format!("{}: {message}", path.display()),
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Error {}

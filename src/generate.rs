@@ -1,0 +1,145 @@
+//! Synthetic plates: a grainy background and a soft-edged moving foreground,
+//! with depth and motion-vector channels, computed strip by strip like any
+//! other node (they are sources: ops without inputs).
+
+use crate::engine::graph::Op;
+use crate::engine::strip::Rows;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PlateKind {
+    /// Opaque grainy gradient with a checker pattern; RGBA and Z.
+    Bg,
+    /// A soft-edged disc moving across a transparent frame; premultiplied
+    /// RGBA, Z and screen-space motion vectors (forward.u, forward.v).
+    Fg,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PixelType {
+    Half,
+    Float,
+}
+
+pub struct Plate {
+    pub kind: PlateKind,
+    /// The display window is 0,0 .. width,height; the data window is that
+    /// size, moved to `origin`.
+    pub width: usize,
+    pub height: usize,
+    pub origin: (i32, i32),
+    pub pixel_type: PixelType,
+}
+
+impl Plate {
+    pub fn display_window(&self) -> IntegerBounds {
+        IntegerBounds::new((0, 0), (self.width, self.height))
+    }
+
+    /// Centre x and speed (pixels per frame) of the foreground disc.
+    fn disc(&self, frame: i64) -> (f32, f32) {
+        let w = self.width as f32;
+        let phase = frame as f32 * 0.2;
+        (w * 0.5 + w * 0.3 * phase.sin(), w * 0.3 * 0.2 * phase.cos())
+    }
+}
+
+/// Deterministic per-pixel noise in [-0.5, 0.5).
+fn grain(x: i32, y: i32, frame: i64, channel: u32) -> f32 {
+    let mut h = (x as u32).wrapping_mul(0x8da6_b343)
+        ^ (y as u32).wrapping_mul(0xd816_3841)
+        ^ (frame as u32).wrapping_mul(0xcb1a_b31f)
+        ^ channel.wrapping_mul(0x1656_67b1);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x2c1b_3c6d);
+    h ^= h >> 12;
+    (h >> 8) as f32 / (1u32 << 24) as f32 - 0.5
+}
+
+fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {
+    let t = ((x - edge0) / (edge1 - edge0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+impl Op for Plate {
+    fn channels(&self, _: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        let colour = match self.pixel_type {
+            PixelType::Half => SampleType::F16,
+            PixelType::Float => SampleType::F32,
+        };
+        let mut names = vec!["A", "B", "G", "R"];
+        names.push("Z");
+        if self.kind == PlateKind::Fg {
+            names.extend(["forward.u", "forward.v"]);
+        }
+        names
+            .into_iter()
+            .map(|n| {
+                let kind = if n.len() == 1 && n != "Z" {
+                    colour
+                } else {
+                    SampleType::F32
+                };
+                ChannelDescription::named(n, kind)
+            })
+            .collect()
+    }
+
+    fn data_window(&self, _: &[IntegerBounds]) -> IntegerBounds {
+        IntegerBounds::new(self.origin, (self.width, self.height))
+    }
+
+    fn compute(&self, frame: i64, _: &[&Rows], out: &mut Rows) {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let (cx, speed) = self.disc(frame);
+        let (cy, radius) = (h * 0.5, h * 0.25);
+        let mut row = vec![[0.0f32; 7]; out.width];
+        for y in out.y..out.end() {
+            for (i, px) in row.iter_mut().enumerate() {
+                let x = out.x + i as i32;
+                let (fx, fy) = (x as f32 + 0.5, y as f32 + 0.5);
+                let noise = |c| grain(x, y, frame, c) * 0.04;
+                *px = match self.kind {
+                    PlateKind::Bg => {
+                        let check = if ((x / 64) + (y / 64)) % 2 == 0 {
+                            0.05
+                        } else {
+                            0.0
+                        };
+                        [
+                            1.0,
+                            0.5 + check + noise(2),
+                            0.3 + 0.4 * fy / h + check + noise(1),
+                            0.2 + 0.6 * fx / w + check + noise(0),
+                            50.0 + 10.0 * fy / h,
+                            0.0,
+                            0.0,
+                        ]
+                    }
+                    PlateKind::Fg => {
+                        let d = ((fx - cx).powi(2) + (fy - cy).powi(2)).sqrt();
+                        let a = 1.0 - smoothstep(radius * 0.85, radius, d);
+                        let inside = a > 0.0;
+                        [
+                            a,
+                            a * (0.2 + noise(2)),
+                            a * (0.5 + noise(1)),
+                            a * (0.9 + noise(0)),
+                            if inside { 5.0 } else { 1.0e4 },
+                            if inside { speed } else { 0.0 },
+                            0.0,
+                        ]
+                    }
+                };
+            }
+            let range = out.row_range(y);
+            let mut values = vec![0.0f32; out.width];
+            for c in 0..out.channels.len() {
+                for (v, px) in values.iter_mut().zip(&row) {
+                    *v = px[c];
+                }
+                out.planes[c].write_f32(range.clone(), &values);
+            }
+        }
+    }
+}

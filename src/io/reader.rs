@@ -1,0 +1,212 @@
+//! A memory-mapped EXR file: headers, offset tables checked against the file,
+//! and chunks read and decompressed one at a time on demand.
+
+use crate::error::{Error, Result};
+use crate::guard::catch_panic;
+use exr::block::chunk::{Chunk, CompressedBlock};
+use exr::block::UncompressedBlock;
+use exr::meta::attribute::IntegerBounds;
+use exr::meta::header::Header;
+use exr::meta::BlockDescription;
+use exr::meta::MetaData;
+use memmap2::{Mmap, UncheckedAdvice};
+use std::fs::File;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// Largest decompressed block accepted. A header field can claim anything; this
+/// bound keeps a damaged file from making a codec allocate gigabytes. A 64K-wide
+/// float RGBA block of 32 lines is 32 MiB, so real files stay far below it.
+pub const MAX_BLOCK_BYTES: usize = 512 << 20;
+
+pub struct ExrFile {
+    pub path: PathBuf,
+    pub frame: Option<i64>,
+    mmap: Mmap,
+    pub meta: MetaData,
+    /// Per part: the file offset of each chunk, in increasing-y (table) order.
+    offsets: Vec<Vec<u64>>,
+    /// Every chunk offset of the file, sorted: where each chunk's bytes end.
+    sorted_offsets: Vec<u64>,
+}
+
+impl ExrFile {
+    /// Maps the file, reads and validates its headers and offset tables.
+    pub fn open(path: &Path, frame: Option<i64>) -> Result<Self> {
+        let err = |message: String| Error::input(path, frame, message);
+        let file = File::open(path).map_err(|e| err(format!("cannot open: {e}")))?;
+        // SAFETY: the map is read-only; a file changed by another process while we
+        // read it gives wrong pixels or a decode error, never unsafety in our code,
+        // since every slice is bounds-checked against the length taken here.
+        let mmap = unsafe { Mmap::map(&file) }.map_err(|e| err(format!("cannot map: {e}")))?;
+        let file_len = mmap.len();
+
+        let mut rest: &[u8] = &mmap[..];
+        let meta = catch_panic(|| MetaData::read_from_buffered(&mut rest, false))
+            .map_err(|p| err(format!("not a readable EXR header (decoder panic: {p})")))?
+            .map_err(|e| err(format!("not a readable EXR header: {e}")))?;
+        let table_start = file_len - rest.len();
+        MetaData::validate(&meta.headers, false)
+            .map_err(|e| err(format!("invalid EXR header: {e}")))?;
+
+        for (index, header) in meta.headers.iter().enumerate() {
+            check_header_sizes(header).map_err(|m| err(format!("part {index}: {m}")))?;
+        }
+
+        let total_chunks: usize = meta.headers.iter().map(|h| h.chunk_count).sum();
+        let table_end = total_chunks
+            .checked_mul(8)
+            .and_then(|n| n.checked_add(table_start))
+            .filter(|&end| end <= file_len)
+            .ok_or_else(|| {
+                err(format!(
+                    "truncated: the header announces {total_chunks} chunks but the file has {file_len} bytes"
+                ))
+            })?;
+
+        let mut offsets = Vec::with_capacity(meta.headers.len());
+        let mut cursor = table_start;
+        for (part, header) in meta.headers.iter().enumerate() {
+            let mut table = Vec::with_capacity(header.chunk_count);
+            for index in 0..header.chunk_count {
+                let bytes: [u8; 8] = mmap[cursor..cursor + 8].try_into().expect("8 bytes");
+                cursor += 8;
+                let offset = u64::from_le_bytes(bytes);
+                if offset < table_end as u64 || offset >= file_len as u64 {
+                    return Err(err(format!(
+                        "truncated or damaged: part {part} chunk {index} is listed at byte {offset}, \
+                         outside the chunk area {table_end}..{file_len}"
+                    )));
+                }
+                table.push(offset);
+            }
+            offsets.push(table);
+        }
+
+        let mut sorted_offsets: Vec<u64> = offsets.iter().flatten().copied().collect();
+        sorted_offsets.sort_unstable();
+        Ok(ExrFile {
+            path: path.to_path_buf(),
+            frame,
+            mmap,
+            meta,
+            offsets,
+            sorted_offsets,
+        })
+    }
+
+    pub fn header(&self, part: usize) -> &Header {
+        &self.meta.headers[part]
+    }
+
+    pub fn file_len(&self) -> usize {
+        self.mmap.len()
+    }
+
+    pub fn error(&self, message: impl std::fmt::Display) -> Error {
+        Error::input(&self.path, self.frame, message)
+    }
+
+    /// Reads chunk `index` of `part` (table order) without decompressing it.
+    pub fn read_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
+        let offset = self.offsets[part][index] as usize;
+        let mut bytes = &self.mmap[offset..];
+        let chunk = catch_panic(|| Chunk::read(&mut bytes, &self.meta))
+            .map_err(|p| {
+                self.error(format!(
+                    "chunk {index} at byte {offset}: decoder panic: {p}"
+                ))
+            })?
+            .map_err(|e| {
+                self.error(format!(
+                    "chunk {index} at byte {offset} is truncated or damaged: {e}"
+                ))
+            })?;
+        if chunk.layer_index != part {
+            return Err(self.error(format!(
+                "chunk {index} at byte {offset} belongs to part {} instead of part {part}",
+                chunk.layer_index
+            )));
+        }
+        let header = self.header(part);
+        if let CompressedBlock::ScanLine(block) = &chunk.compressed_block {
+            let expected = header.own_attributes.layer_position.y()
+                + (index * header.compression.scan_lines_per_block()) as i32;
+            if block.y_coordinate != expected {
+                return Err(self.error(format!(
+                    "chunk {index} at byte {offset} starts at line {} instead of line {expected}",
+                    block.y_coordinate
+                )));
+            }
+        }
+        Ok(chunk)
+    }
+
+    /// Reads and decompresses chunk `index` of `part`.
+    pub fn decode_chunk(&self, part: usize, index: usize) -> Result<UncompressedBlock> {
+        let chunk = self.read_chunk(part, index)?;
+        let block = catch_panic(|| UncompressedBlock::decompress_chunk(chunk, &self.meta, false))
+            .map_err(|p| self.error(format!("chunk {index}: decoder panic: {p}")))?
+            .map_err(|e| self.error(format!("chunk {index} does not decompress: {e}")))?;
+        let expected = block.index.pixel_size.area() * self.header(part).channels.bytes_per_pixel;
+        if block.data.len() != expected {
+            return Err(self.error(format!(
+                "chunk {index} decompresses to {} bytes instead of {expected}",
+                block.data.len()
+            )));
+        }
+        Ok(block)
+    }
+
+    /// The bytes chunks `indices` of `part` occupy in the file (assuming each
+    /// chunk ends where the next-higher offset begins).
+    fn chunk_bytes(&self, part: usize, indices: Range<usize>) -> Range<usize> {
+        let table = &self.offsets[part];
+        let start = indices.clone().map(|i| table[i]).min().unwrap_or(0) as usize;
+        let last = indices.map(|i| table[i]).max().unwrap_or(0);
+        let next = self.sorted_offsets.partition_point(|&o| o <= last);
+        let end = self
+            .sorted_offsets
+            .get(next)
+            .map_or(self.mmap.len(), |&o| o as usize);
+        start..end
+    }
+
+    /// Drops the mapped pages of chunks we are done with, so that resident
+    /// memory does not grow with the file size. Pages shared with neighbouring
+    /// chunks are simply read again from the page cache if needed.
+    pub fn release_chunks(&self, part: usize, indices: Range<usize>) {
+        if indices.is_empty() {
+            return;
+        }
+        let bytes = self.chunk_bytes(part, indices);
+        // SAFETY: the mapping is read-only and file-backed: dropped pages are
+        // re-read from the file on the next access, with the same contents.
+        let _ = unsafe {
+            self.mmap
+                .unchecked_advise_range(UncheckedAdvice::DontNeed, bytes.start, bytes.len())
+        };
+    }
+}
+
+/// Sizes a damaged header could inflate, checked before anything is allocated.
+fn check_header_sizes(header: &Header) -> std::result::Result<(), String> {
+    let window: IntegerBounds = header.data_window();
+    if window.size.width() == 0 || window.size.height() == 0 {
+        return Err("empty data window".into());
+    }
+    if !header.deep {
+        let block_bytes = header.max_block_byte_size();
+        if block_bytes > MAX_BLOCK_BYTES {
+            return Err(format!(
+                "a block of {} x {} pixels would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
+                window.size.width(),
+                match header.blocks {
+                    BlockDescription::ScanLines => header.compression.scan_lines_per_block(),
+                    BlockDescription::Tiles(t) => t.tile_size.height(),
+                }
+            ));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,12 @@
+//! exrcomp: a streaming OpenEXR sequence compositor.
+
+pub mod cli;
+pub mod commands;
+pub mod engine;
+pub mod error;
+pub mod generate;
+pub mod guard;
+pub mod info;
+pub mod io;
+pub mod ops;
+pub mod report;

@@ -1,0 +1,3 @@
+//! Compositing operations, one family per file, as pure functions over strips.
+
+pub mod over;

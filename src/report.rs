@@ -1,0 +1,92 @@
+//! Progress on the terminal and the summary at the end of a run.
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::time::{Duration, Instant};
+
+pub struct Report {
+    bar: ProgressBar,
+    started: Instant,
+    quiet: bool,
+    json: bool,
+}
+
+/// What a finished run did.
+pub struct Summary {
+    pub frames: usize,
+    pub pixels: u64,
+    pub seconds: f64,
+}
+
+impl Report {
+    /// A progress bar over `frames` frames, drawn only on a terminal and
+    /// neither with `quiet` nor `json`.
+    pub fn new(label: &str, frames: usize, quiet: bool, json: bool) -> Self {
+        let target = if quiet || json {
+            ProgressDrawTarget::hidden()
+        } else {
+            ProgressDrawTarget::stderr()
+        };
+        let bar = ProgressBar::with_draw_target(Some(frames as u64), target);
+        bar.set_style(
+            ProgressStyle::with_template(
+                "{prefix} [{bar:30}] {pos}/{len} frames  {per_sec:.1}  ETA {eta}",
+            )
+            .expect("valid template")
+            .progress_chars("=> "),
+        );
+        bar.set_prefix(label.to_string());
+        bar.enable_steady_tick(Duration::from_millis(250));
+        Report {
+            bar,
+            started: Instant::now(),
+            quiet,
+            json,
+        }
+    }
+
+    pub fn frame_done(&self) {
+        self.bar.inc(1);
+    }
+
+    pub fn elapsed(&self) -> f64 {
+        self.started.elapsed().as_secs_f64()
+    }
+
+    /// Prints the summary: a line on stderr, and JSON on stdout with `json`.
+    pub fn finish(&self, summary: &Summary) {
+        self.bar.finish_and_clear();
+        let seconds = summary.seconds.max(1e-9);
+        let rss = peak_rss_bytes();
+        if self.json {
+            let record = serde_json::json!({
+                "frames": summary.frames,
+                "seconds": summary.seconds,
+                "frames_per_second": summary.frames as f64 / seconds,
+                "pixels": summary.pixels,
+                "pixels_per_second": summary.pixels as f64 / seconds,
+                "peak_rss_bytes": rss,
+            });
+            println!("{record}");
+        } else if !self.quiet {
+            eprintln!(
+                "{} frames in {:.2} s: {:.2} frames/s, {:.1} Mpixels/s, peak memory {}",
+                summary.frames,
+                summary.seconds,
+                summary.frames as f64 / seconds,
+                summary.pixels as f64 / seconds / 1e6,
+                rss.map_or("unknown".to_string(), |b| format!(
+                    "{:.1} MiB",
+                    b as f64 / 1048576.0
+                )),
+            );
+        }
+    }
+}
+
+/// Peak resident set size of this process (Linux: VmHWM).
+pub fn peak_rss_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
