@@ -34,6 +34,14 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Read and write a sequence unchanged but for compression (the codec floor).
+    Transcode {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// Describe EXR files and check that every chunk decodes.
     Info {
         #[arg(required = true)]
@@ -91,6 +99,10 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(long)]
     pub json: bool,
+    /// Rows per strip, rounded up to whole output blocks (for tests of strip
+    /// boundaries; the default sizes strips by bytes).
+    #[arg(long, hide = true)]
+    pub strip_rows: Option<usize>,
 }
 
 fn parse_origin(text: &str) -> Result<(i32, i32), String> {

@@ -36,6 +36,13 @@ pub fn run(command: Command) -> Result<()> {
             let job = input_job(inputs, &output, graph, 1, &run)?;
             run_job(&job, "over", &run).map(drop)
         }
+        Command::Transcode { input, output, run } => {
+            let graph = Graph {
+                nodes: vec![Node::Input(0)],
+            };
+            let job = input_job(vec![FramePattern::parse(&input)], &output, graph, 0, &run)?;
+            run_job(&job, "transcode", &run).map(drop)
+        }
         Command::Info { files } => info(&files),
         Command::Demo {
             dir,
@@ -127,6 +134,7 @@ fn input_job(
         graph,
         compression: parse_compression(run)?,
         header_base: HeaderBase::Input(header_from),
+        strip_rows: run.strip_rows,
     })
 }
 
@@ -155,6 +163,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         },
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
+        strip_rows: run.strip_rows,
     })
 }
 
@@ -221,6 +230,7 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         compression: run.compression.clone(),
         quiet: run.quiet || run.json,
         json: false,
+        strip_rows: run.strip_rows,
     };
     let pattern = |name: &str| {
         dir.join(format!("{name}.####.exr"))

@@ -104,9 +104,8 @@ impl<'g> Composer<'g> {
     }
 
     fn take_output(&mut self) -> Option<Rows> {
-        let out = &self.windows[self.graph.output()];
         let top = self.window.position.y();
-        let mut end = out.end();
+        let mut end = self.windows[self.graph.output()].end();
         if end < self.bottom() {
             let m = self.emit_multiple as i32;
             end = top + (end - top) / m * m;
@@ -114,7 +113,7 @@ impl<'g> Composer<'g> {
         if end <= self.emitted {
             return None;
         }
-        let rows = out.copy_rows(self.emitted..end);
+        let rows = self.windows[self.graph.output()].take_rows(self.emitted..end);
         self.emitted = end;
         Some(rows)
     }
@@ -134,6 +133,149 @@ impl<'g> Composer<'g> {
         }
         for (window, from) in self.windows.iter_mut().zip(keep_from) {
             window.drop_rows_before(from);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::graph::Op;
+    use crate::engine::strip::Samples;
+    use exr::meta::attribute::SampleType;
+
+    /// Sums each pixel's column over rows y - halo ..= y + halo, clamped to
+    /// the image: a stand-in for any neighbourhood filter.
+    struct VerticalSum {
+        halo: usize,
+        top: i32,
+        bottom: i32,
+    }
+
+    impl Op for VerticalSum {
+        fn halo(&self) -> usize {
+            self.halo
+        }
+        fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+            inputs[0].to_vec()
+        }
+        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+            let input = inputs[0];
+            let h = self.halo as i32;
+            for y in out.y..out.end() {
+                let mut sums = vec![0.0f32; out.width];
+                let mut row = vec![0.0f32; out.width];
+                for source in (y - h).max(self.top)..=(y + h).min(self.bottom - 1) {
+                    input.planes[0].read_f32(input.row_range(source), &mut row);
+                    sums.iter_mut().zip(&row).for_each(|(s, r)| *s += r);
+                }
+                let range = out.row_range(y);
+                out.planes[0].write_f32(range, &sums);
+            }
+        }
+    }
+
+    fn column_image(height: usize) -> Vec<f32> {
+        (0..height).map(|y| (y * y % 17) as f32).collect()
+    }
+
+    fn reference(values: &[f32], halo: usize) -> Vec<f32> {
+        let n = values.len() as i64;
+        (0..n)
+            .map(|y| {
+                let lo = (y - halo as i64).max(0);
+                let hi = (y + halo as i64).min(n - 1);
+                (lo..=hi).map(|i| values[i as usize]).sum()
+            })
+            .collect()
+    }
+
+    /// Streams a one-pixel-wide column through `halos` chained sums.
+    fn stream(values: &[f32], halos: &[usize], strip: usize, emit: usize) -> Vec<f32> {
+        let (top, height) = (-3, values.len());
+        let bottom = top + height as i32;
+        let window = IntegerBounds::new((0, top), (1, height));
+        let mut nodes = vec![Node::Input(0)];
+        for (i, &halo) in halos.iter().enumerate() {
+            nodes.push(Node::Op {
+                op: Box::new(VerticalSum { halo, top, bottom }),
+                inputs: vec![i],
+            });
+        }
+        let graph = Graph { nodes };
+        let channels =
+            vec![vec![ChannelDescription::named("Y", SampleType::F32)]; graph.nodes.len()];
+        let valid = vec![window; graph.nodes.len()];
+        let mut composer = Composer::new(&graph, window, &channels, &valid, emit);
+        let mut out = Vec::new();
+        for y in (top..bottom).step_by(strip) {
+            let end = (y + strip as i32).min(bottom);
+            let mut rows = Rows::zeros(0, y, 1, (end - y) as usize, channels[0].clone(), window);
+            let slice = &values[(y - top) as usize..(end - top) as usize];
+            rows.planes[0] = Samples::F32(slice.to_vec());
+            if let Some(done) = composer.push(0, y..end, vec![rows]) {
+                assert_eq!(done.y, top + out.len() as i32, "rows come out in order");
+                let mut v = vec![0.0; done.height];
+                done.planes[0].read_f32(0..done.height, &mut v);
+                out.extend(v);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn halo_windows_give_the_whole_image_result_for_any_strip_size() {
+        for height in [1, 5, 40, 97] {
+            let values = column_image(height);
+            for halos in [vec![0], vec![3], vec![2, 7], vec![50]] {
+                let mut expected = values.clone();
+                for &h in &halos {
+                    expected = reference(&expected, h);
+                }
+                for strip in [1, 4, 16, 200] {
+                    for emit in [1, 16] {
+                        let got = stream(&values, &halos, strip, emit);
+                        assert_eq!(
+                            got, expected,
+                            "height {height} halos {halos:?} strip {strip} emit {emit}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn windows_hold_no_more_than_the_halo_needs() {
+        let values = column_image(200);
+        let (top, bottom) = (-3, 197);
+        let window = IntegerBounds::new((0, top), (1, 200));
+        let graph = Graph {
+            nodes: vec![
+                Node::Input(0),
+                Node::Op {
+                    op: Box::new(VerticalSum {
+                        halo: 5,
+                        top,
+                        bottom,
+                    }),
+                    inputs: vec![0],
+                },
+            ],
+        };
+        let channels = vec![vec![ChannelDescription::named("Y", SampleType::F32)]; 2];
+        let mut composer = Composer::new(&graph, window, &channels, &[window; 2], 1);
+        for y in (top..bottom).step_by(8) {
+            let mut rows = Rows::zeros(0, y, 1, 8, channels[0].clone(), window);
+            rows.planes[0] =
+                Samples::F32(values[(y - top) as usize..(y - top) as usize + 8].to_vec());
+            composer.push(0, y..y + 8, vec![rows]);
+            // Input rows kept: at most the strip plus twice the halo.
+            assert!(
+                composer.windows[0].height <= 8 + 2 * 5,
+                "kept {}",
+                composer.windows[0].height
+            );
         }
     }
 }

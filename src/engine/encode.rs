@@ -2,10 +2,12 @@
 
 use super::strip::Rows;
 use crate::error::{Error, Result};
-use exr::block::chunk::Chunk;
+use crate::io::zip;
+use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
 use exr::meta::header::Header;
+use exr::prelude::Compression;
 use rayon::prelude::*;
 
 /// A compressed block and its index in the output's offset table.
@@ -45,6 +47,12 @@ pub fn encode_rows(rows: &Rows, header: &Header) -> Result<Vec<IndexedChunk>> {
                     data.extend_from_slice(rows.planes[p].bytes(rows.row_range(y)));
                 }
             }
+            if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
+                return Ok(IndexedChunk {
+                    index: first_row / lines + b,
+                    chunk: scanline_chunk(y0, zip::compress(&data).unwrap_or(data)),
+                });
+            }
             let block = UncompressedBlock {
                 index: BlockIndex {
                     layer: 0,
@@ -63,4 +71,14 @@ pub fn encode_rows(rows: &Rows, header: &Header) -> Result<Vec<IndexedChunk>> {
             })
         })
         .collect()
+}
+
+fn scanline_chunk(y: i32, compressed_pixels_le: Vec<u8>) -> Chunk {
+    Chunk {
+        layer_index: 0,
+        compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
+            y_coordinate: y,
+            compressed_pixels_le,
+        }),
+    }
 }

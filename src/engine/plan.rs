@@ -26,6 +26,8 @@ pub struct Job {
     /// Output compression; `None` keeps that of the input the header comes from.
     pub compression: Option<Compression>,
     pub header_base: HeaderBase,
+    /// Rows per strip (rounded up to whole blocks); `None` sizes by bytes.
+    pub strip_rows: Option<usize>,
 }
 
 /// Where the output header's attributes come from.

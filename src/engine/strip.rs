@@ -207,6 +207,23 @@ impl Rows {
         self.height -= count;
     }
 
+    /// Rows `range` (absolute): moved out when they are all the rows held
+    /// (the window is then empty, starting at `range.end`), else copied.
+    pub fn take_rows(&mut self, range: Range<i32>) -> Rows {
+        if range.start == self.y && range.end == self.end() {
+            let empty = Rows::zeros(
+                self.x,
+                range.end,
+                self.width,
+                0,
+                self.channels.clone(),
+                self.valid,
+            );
+            return std::mem::replace(self, empty);
+        }
+        self.copy_rows(range)
+    }
+
     /// A copy of rows `range` (absolute).
     pub fn copy_rows(&self, range: Range<i32>) -> Rows {
         let start = self.row_range(range.start).start;

@@ -1,0 +1,105 @@
+//! Checks a deep scanline chunk without interpreting its samples: the pixel
+//! offset table must unpack to one count per pixel, never decreasing, and the
+//! sample data must unpack to exactly what those counts add up to.
+
+use super::reader::MAX_BLOCK_BYTES;
+use super::zip;
+use exr::block::chunk::CompressedDeepScanLineBlock;
+use exr::meta::header::Header;
+use exr::prelude::Compression;
+
+pub fn check_deep_scanline(
+    header: &Header,
+    block: &CompressedDeepScanLineBlock,
+) -> Result<(), String> {
+    let window = header.data_window();
+    let lines = header.compression.scan_lines_per_block() as i64;
+    let rows = lines.min(window.end().y() as i64 - block.y_coordinate as i64);
+    let table_bytes = (window.size.width() as u64)
+        .checked_mul(rows as u64 * 4)
+        .filter(|&n| n <= MAX_BLOCK_BYTES as u64)
+        .ok_or("the pixel offset table would be unreasonably large")?
+        as usize;
+    let table = unpack(
+        header.compression,
+        bytemuck::cast_slice(&block.compressed_pixel_offset_table),
+        table_bytes,
+    )?;
+    let mut previous = 0i32;
+    for count in table
+        .chunks_exact(4)
+        .map(|b| i32::from_le_bytes(b.try_into().expect("4 bytes")))
+    {
+        if count < previous {
+            return Err(format!(
+                "pixel offset table decreases ({previous} then {count})"
+            ));
+        }
+        previous = count;
+    }
+    let sample_bytes = previous as u64 * header.channels.bytes_per_pixel as u64;
+    if sample_bytes != block.decompressed_sample_data_size as u64 {
+        return Err(format!(
+            "{previous} samples need {sample_bytes} bytes but the chunk announces {}",
+            block.decompressed_sample_data_size
+        ));
+    }
+    if sample_bytes > MAX_BLOCK_BYTES as u64 {
+        return Err("the sample data would be unreasonably large".into());
+    }
+    unpack(
+        header.compression,
+        &block.compressed_sample_data_le,
+        sample_bytes as usize,
+    )
+    .map(drop)
+}
+
+/// Deep data allows only none, RLE, ZIPS and ZIP; a part smaller unpacked
+/// than packed is stored raw.
+fn unpack(compression: Compression, packed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
+    if packed.len() == expected {
+        return Ok(packed.to_vec());
+    }
+    match compression {
+        Compression::ZIP1 | Compression::ZIP16 => zip::decompress(packed, expected),
+        Compression::RLE => unpack_rle(packed, expected),
+        other => Err(format!(
+            "{other} is not allowed for deep data, or the data size is wrong"
+        )),
+    }
+}
+
+/// EXR's run-length code (a signed count byte: negative, that many literal
+/// bytes follow; else the next byte repeats count + 1 times) over the same
+/// byte split and predictor as ZIP.
+fn unpack_rle(packed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
+    let mut out = Vec::with_capacity(expected);
+    let mut i = 0;
+    while i < packed.len() {
+        let count = packed[i] as i8;
+        i += 1;
+        if count < 0 {
+            let n = (-(count as i32)) as usize;
+            let literal = packed
+                .get(i..i + n)
+                .ok_or("RLE data ends inside a literal run")?;
+            out.extend_from_slice(literal);
+            i += n;
+        } else {
+            let value = *packed.get(i).ok_or("RLE data ends inside a repeat run")?;
+            out.resize(out.len() + count as usize + 1, value);
+            i += 1;
+        }
+        if out.len() > expected {
+            return Err("RLE data unpacks to more bytes than announced".into());
+        }
+    }
+    if out.len() != expected {
+        return Err(format!(
+            "RLE data holds {} bytes instead of {expected}",
+            out.len()
+        ));
+    }
+    Ok(zip::untransform(out))
+}

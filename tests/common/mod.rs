@@ -1,0 +1,406 @@
+//! Test helpers: writing and reading images through the exr crate's
+//! whole-image API (independent of exrcomp's block reader and writer), a
+//! naive whole-image reference `over`, running the binary, and the peers.
+#![allow(dead_code)]
+
+use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
+use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, WritableImage};
+use half::f16;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub fn exrcomp() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_exrcomp"))
+}
+
+/// Runs exrcomp with `args`; returns its output.
+pub fn run(args: &[&str]) -> Output {
+    exrcomp().args(args).output().expect("exrcomp runs")
+}
+
+pub fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+pub fn shared_images() -> PathBuf {
+    std::env::var_os("EXRCOMP_SHARED_IMAGES")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/exr-images"))
+}
+
+/// A channel's samples, in its own type.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Samples {
+    F16(Vec<f16>),
+    F32(Vec<f32>),
+    U32(Vec<u32>),
+}
+
+impl Samples {
+    pub fn get_f32(&self, i: usize) -> f32 {
+        match self {
+            Samples::F16(v) => v[i].to_f32(),
+            Samples::F32(v) => v[i],
+            Samples::U32(v) => v[i] as f32,
+        }
+    }
+
+    pub fn bits(&self, i: usize) -> u32 {
+        match self {
+            Samples::F16(v) => v[i].to_bits() as u32,
+            Samples::F32(v) => v[i].to_bits(),
+            Samples::U32(v) => v[i],
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Samples::F16(v) => v.len(),
+            Samples::F32(v) => v.len(),
+            Samples::U32(v) => v.len(),
+        }
+    }
+
+    fn zeros_like(&self, len: usize) -> Samples {
+        match self {
+            Samples::F16(_) => Samples::F16(vec![f16::ZERO; len]),
+            Samples::F32(_) => Samples::F32(vec![0.0; len]),
+            Samples::U32(_) => Samples::U32(vec![0; len]),
+        }
+    }
+
+    fn set_f32(&mut self, i: usize, value: f32) {
+        match self {
+            Samples::F16(v) => v[i] = f16::from_f32(value),
+            Samples::F32(v) => v[i] = value,
+            Samples::U32(v) => v[i] = value as u32,
+        }
+    }
+
+    fn copy_from(&mut self, i: usize, other: &Samples, j: usize) {
+        match (self, other) {
+            (Samples::F16(a), Samples::F16(b)) => a[i] = b[j],
+            (Samples::F32(a), Samples::F32(b)) => a[i] = b[j],
+            (Samples::U32(a), Samples::U32(b)) => a[i] = b[j],
+            _ => panic!("type mismatch"),
+        }
+    }
+}
+
+/// A flat single-part image: data window, display window, named channels.
+#[derive(Clone, Debug)]
+pub struct Img {
+    pub x: i32,
+    pub y: i32,
+    pub width: usize,
+    pub height: usize,
+    pub display: (usize, usize),
+    pub channels: BTreeMap<String, Samples>,
+}
+
+impl Img {
+    /// Index of absolute pixel (x, y) if it is inside the data window.
+    pub fn index(&self, x: i32, y: i32) -> Option<usize> {
+        let (dx, dy) = (x - self.x, y - self.y);
+        (dx >= 0 && dy >= 0 && (dx as usize) < self.width && (dy as usize) < self.height)
+            .then(|| dy as usize * self.width + dx as usize)
+    }
+}
+
+/// Deterministic pseudo-random numbers in [0, 1).
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    pub fn next(&mut self) -> f32 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+pub enum Kind {
+    Half,
+    Float,
+}
+
+/// A premultiplied RGBA image with random alpha (including exact 0 and 1),
+/// colours up to 1.5x alpha, plus `extra` pass-through channels
+/// (a float Z and a u32 id).
+pub fn random_rgba(
+    seed: u64,
+    x: i32,
+    y: i32,
+    width: usize,
+    height: usize,
+    kind: Kind,
+    extra: bool,
+) -> Img {
+    let mut rng = Lcg(seed);
+    let n = width * height;
+    let alpha: Vec<f32> = (0..n)
+        .map(|_| match rng.next() {
+            r if r < 0.2 => 0.0,
+            r if r < 0.4 => 1.0,
+            _ => rng.next(),
+        })
+        .collect();
+    let mut channels = BTreeMap::new();
+    let make = |values: Vec<f32>| match kind {
+        Kind::Half => Samples::F16(values.into_iter().map(f16::from_f32).collect()),
+        Kind::Float => Samples::F32(values),
+    };
+    for name in ["R", "G", "B"] {
+        let values = alpha.iter().map(|&a| a * rng.next() * 1.5).collect();
+        channels.insert(name.to_string(), make(values));
+    }
+    channels.insert("A".to_string(), make(alpha));
+    if extra {
+        channels.insert(
+            "Z".into(),
+            Samples::F32((0..n).map(|_| rng.next() * 100.0).collect()),
+        );
+        channels.insert(
+            "id".into(),
+            Samples::U32((0..n).map(|_| (rng.next() * 4e9) as u32).collect()),
+        );
+    }
+    Img {
+        x,
+        y,
+        width,
+        height,
+        display: (64, 48),
+        channels,
+    }
+}
+
+pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order: LineOrder) {
+    let channels: Vec<AnyChannel<FlatSamples>> = img
+        .channels
+        .iter()
+        .map(|(name, s)| {
+            let samples = match s {
+                Samples::F16(v) => FlatSamples::F16(v.clone()),
+                Samples::F32(v) => FlatSamples::F32(v.clone()),
+                Samples::U32(v) => FlatSamples::U32(v.clone()),
+            };
+            AnyChannel::new(name.as_str(), samples)
+        })
+        .collect();
+    let mut attributes = LayerAttributes::default();
+    attributes.layer_position = exr::math::Vec2(img.x, img.y);
+    attributes.comments = Some("written by the tests".into());
+    let layer = Layer::new(
+        (img.width, img.height),
+        attributes,
+        Encoding {
+            compression,
+            blocks: Blocks::ScanLines,
+            line_order,
+        },
+        AnyChannels::sort(channels.into()),
+    );
+    let mut image = Image::from_layer(layer);
+    image.attributes.display_window =
+        exr::meta::attribute::IntegerBounds::from_dimensions(img.display);
+    image.write().to_file(path).expect("test image written");
+}
+
+pub fn read_image(path: &Path) -> Img {
+    let image =
+        exr::prelude::read_first_flat_layer_from_file(path).expect("readable by the exr crate");
+    let layer = &image.layer_data;
+    let channels = layer
+        .channel_data
+        .list
+        .iter()
+        .map(|c| {
+            let samples = match &c.sample_data {
+                FlatSamples::F16(v) => Samples::F16(v.clone()),
+                FlatSamples::F32(v) => Samples::F32(v.clone()),
+                FlatSamples::U32(v) => Samples::U32(v.clone()),
+            };
+            (c.name.to_string(), samples)
+        })
+        .collect();
+    let display = image.attributes.display_window.size;
+    Img {
+        x: layer.attributes.layer_position.x(),
+        y: layer.attributes.layer_position.y(),
+        width: layer.size.width(),
+        height: layer.size.height(),
+        display: (display.width(), display.height()),
+        channels,
+    }
+}
+
+/// Alpha at a pixel: the A channel, or 1 inside the data window without one;
+/// 0 outside the data window.
+fn alpha_at(img: &Img, x: i32, y: i32) -> f32 {
+    match img.index(x, y) {
+        None => 0.0,
+        Some(i) => img.channels.get("A").map_or(1.0, |a| a.get_f32(i)),
+    }
+}
+
+fn value_at(img: &Img, name: &str, x: i32, y: i32) -> f32 {
+    match (img.index(x, y), img.channels.get(name)) {
+        (Some(i), Some(s)) => s.get_f32(i),
+        _ => 0.0,
+    }
+}
+
+/// The whole-image reference `over`, straight from specs/ops.md: loop over
+/// the union of the data windows, pixel by pixel, in f32.
+pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
+    let x0 = fg.x.min(bg.x);
+    let y0 = fg.y.min(bg.y);
+    let x1 = (fg.x + fg.width as i32).max(bg.x + bg.width as i32);
+    let y1 = (fg.y + fg.height as i32).max(bg.y + bg.height as i32);
+    let (width, height) = ((x1 - x0) as usize, (y1 - y0) as usize);
+    let mut channels: BTreeMap<String, Samples> = BTreeMap::new();
+    for (name, s) in &bg.channels {
+        channels.insert(name.clone(), s.zeros_like(width * height));
+    }
+    for name in ["R", "G", "B", "A"] {
+        if let (Some(s), false) = (fg.channels.get(name), bg.channels.contains_key(name)) {
+            channels.insert(name.to_string(), s.zeros_like(width * height));
+        }
+    }
+    for (name, out) in channels.iter_mut() {
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let i = (y - y0) as usize * width + (x - x0) as usize;
+                let fa = alpha_at(fg, x, y);
+                let ba = alpha_at(bg, x, y);
+                match name.as_str() {
+                    "A" => out.set_f32(i, fa + (1.0 - fa) * ba),
+                    "R" | "G" | "B" => {
+                        let f = value_at(fg, name, x, y);
+                        let b = value_at(bg, name, x, y);
+                        let c = if straight {
+                            let a = fa + (1.0 - fa) * ba;
+                            let p = fa * f + (1.0 - fa) * (ba * b);
+                            if a == 0.0 {
+                                0.0
+                            } else {
+                                p / a
+                            }
+                        } else {
+                            f + (1.0 - fa) * b
+                        };
+                        out.set_f32(i, c)
+                    }
+                    _ => {
+                        if let Some(j) = bg.index(x, y) {
+                            out.copy_from(i, &bg.channels[name], j);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Img {
+        x: x0,
+        y: y0,
+        width,
+        height,
+        display: bg.display,
+        channels,
+    }
+}
+
+/// Panics with the first differing sample unless `a` and `b` are identical
+/// to the bit (windows, channel names and types, samples).
+pub fn assert_identical(a: &Img, b: &Img) {
+    assert_eq!(
+        (a.x, a.y, a.width, a.height),
+        (b.x, b.y, b.width, b.height),
+        "data windows differ"
+    );
+    assert_eq!(a.display, b.display, "display windows differ");
+    let names_a: Vec<_> = a.channels.keys().collect();
+    let names_b: Vec<_> = b.channels.keys().collect();
+    assert_eq!(names_a, names_b, "channel lists differ");
+    for (name, sa) in &a.channels {
+        let sb = &b.channels[name];
+        assert_eq!(
+            std::mem::discriminant(sa),
+            std::mem::discriminant(sb),
+            "channel {name} type differs"
+        );
+        for i in 0..sa.len() {
+            assert_eq!(
+                sa.bits(i),
+                sb.bits(i),
+                "channel {name} differs at pixel ({}, {}): {} vs {}",
+                a.x + (i % a.width) as i32,
+                a.y + (i / a.width) as i32,
+                sa.get_f32(i),
+                sb.get_f32(i)
+            );
+        }
+    }
+}
+
+/// A peer tool, or `None` (skip) when it is missing, unless
+/// EXRCOMP_REQUIRE_PEERS=1, which makes a missing peer a failure.
+pub fn peer(name: &str) -> Option<PathBuf> {
+    let found = std::env::var_os("PATH").and_then(|paths| {
+        std::env::split_paths(&paths)
+            .map(|p| p.join(name))
+            .find(|p| p.is_file())
+    });
+    if found.is_none() {
+        if std::env::var("EXRCOMP_REQUIRE_PEERS").as_deref() == Ok("1") {
+            panic!("peer tool {name} is required (EXRCOMP_REQUIRE_PEERS=1) but not installed");
+        }
+        eprintln!("SKIPPED: peer tool {name} is not installed");
+    }
+    found
+}
+
+/// Decodes every pixel of `path` through OpenEXR's C++ library (oiiotool
+/// --printstats) and parses its header with exrheader; panics on failure.
+pub fn assert_peers_read(path: &Path) {
+    if let Some(oiiotool) = peer("oiiotool") {
+        let out = Command::new(oiiotool)
+            .arg(path)
+            .arg("--printstats")
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout).to_string()
+            + &String::from_utf8_lossy(&out.stderr);
+        assert!(
+            out.status.success() && !text.to_lowercase().contains("error"),
+            "oiiotool cannot decode {}: {text}",
+            path.display()
+        );
+    }
+    if let Some(exrheader) = peer("exrheader") {
+        let out = Command::new(exrheader).arg(path).output().unwrap();
+        assert!(
+            out.status.success(),
+            "exrheader cannot read {}: {}",
+            path.display(),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
+
+pub fn compression(name: &str) -> Compression {
+    match name {
+        "none" => Compression::Uncompressed,
+        "rle" => Compression::RLE,
+        "zips" => Compression::ZIP1,
+        "zip" => Compression::ZIP16,
+        "piz" => Compression::PIZ,
+        "pxr24" => Compression::PXR24,
+        "b44" => Compression::B44,
+        "b44a" => Compression::B44A,
+        other => panic!("no compression {other} in the tests"),
+    }
+}
