@@ -190,9 +190,11 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
             AnyChannel::new(name.as_str(), samples)
         })
         .collect();
-    let mut attributes = LayerAttributes::default();
-    attributes.layer_position = exr::math::Vec2(img.x, img.y);
-    attributes.comments = Some("written by the tests".into());
+    let attributes = LayerAttributes {
+        layer_position: exr::math::Vec2(img.x, img.y),
+        comments: Some("written by the tests".into()),
+        ..Default::default()
+    };
     let layer = Layer::new(
         (img.width, img.height),
         attributes,
