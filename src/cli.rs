@@ -73,7 +73,7 @@ pub enum Command {
         #[arg(long, default_value_t = 1080)]
         height: usize,
         /// Data window origin, as X,Y (display window stays at 0,0).
-        #[arg(long, value_parser = parse_origin, default_value = "0,0")]
+        #[arg(long, value_parser = parse_origin, default_value = "0,0", allow_hyphen_values = true)]
         origin: (i32, i32),
         /// Sample type of the colour channels.
         #[arg(long, value_enum, default_value = "half")]

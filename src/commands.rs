@@ -207,17 +207,31 @@ fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<Summary> {
 }
 
 fn info(files: &[std::path::PathBuf]) -> Result<()> {
-    let mut first_error = None;
+    if let [file] = files {
+        print!("{}", crate::info::describe(file)?);
+        return Ok(());
+    }
+    let mut failed: Vec<Error> = Vec::new();
     for path in files {
         match crate::info::describe(path) {
             Ok(text) => print!("{text}"),
             Err(e) => {
                 eprintln!("exrcomp: error: {e}");
-                first_error.get_or_insert(e);
+                failed.push(e);
             }
         }
     }
-    first_error.map_or(Ok(()), Err)
+    match failed.first() {
+        None => Ok(()),
+        Some(first) => Err(Error::new(
+            first.kind,
+            format!(
+                "{} of {} files could not be read",
+                failed.len(),
+                files.len()
+            ),
+        )),
+    }
 }
 
 /// Writes a synthetic foreground and background sequence into `dir`, then

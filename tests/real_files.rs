@@ -1,0 +1,147 @@
+//! OpenEXR's public test images: every good one is read, every damaged one
+//! gives a clear error quickly, and a real multi-layer sequence composites.
+
+mod common;
+use common::*;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+fn files_under(folder: &str) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let mut stack = vec![shared_images().join(folder)];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else {
+                found.push(path);
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+#[test]
+fn info_reads_every_good_file() {
+    let good: Vec<PathBuf> = files_under(".")
+        .into_iter()
+        .filter(|p| {
+            p.extension().is_some_and(|e| e == "exr") && !p.to_string_lossy().contains("/Damaged/")
+        })
+        .collect();
+    assert!(
+        good.len() >= 20,
+        "the shared images are missing: {}",
+        shared_images().display()
+    );
+    for path in good {
+        let out = run(&["info", path.to_str().unwrap()]);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{}: {}", path.display(), stderr(&out));
+        assert!(
+            text.contains("data window:") && text.contains("channels ("),
+            "{text}"
+        );
+        assert!(
+            text.contains("pixels: all"),
+            "{}: chunks not all checked:\n{text}",
+            path.display()
+        );
+    }
+}
+
+#[test]
+fn info_rejects_every_damaged_file_quickly_and_cleanly() {
+    let damaged = files_under("Damaged");
+    assert!(damaged.len() >= 50, "the Damaged corpus is missing");
+    for path in damaged {
+        let started = Instant::now();
+        let out = run(&["info", path.to_str().unwrap()]);
+        let message = stderr(&out);
+        assert_eq!(
+            out.status.code(),
+            Some(3),
+            "{}: exit {:?}, {message}",
+            path.display(),
+            out.status
+        );
+        assert!(
+            message.contains(path.file_name().unwrap().to_str().unwrap()),
+            "error must name the file: {message}"
+        );
+        assert_eq!(
+            message.lines().count(),
+            1,
+            "one line, no panic trace: {message}"
+        );
+        assert!(!message.contains("panicked"), "{message}");
+        assert!(
+            started.elapsed() < Duration::from_secs(10),
+            "{} took {:?}",
+            path.display(),
+            started.elapsed()
+        );
+    }
+}
+
+#[test]
+fn two_frames_of_the_beachball_sequence_composite_like_the_reference() {
+    // fg frame N is Beachball frame N + 1, over Beachball frame N: a real
+    // multi-layer sequence whose many extra channels pass through from bg.
+    let dir = tempfile::tempdir().unwrap();
+    let beachball = shared_images().join("Beachball");
+    for frame in 1..=2 {
+        let source = beachball.join(format!("singlepart.{:04}.exr", frame + 1));
+        std::fs::copy(&source, dir.path().join(format!("fg.{frame:04}.exr"))).unwrap();
+    }
+    let fg = dir.path().join("fg.####.exr");
+    let bg = beachball.join("singlepart.####.exr");
+    let out = dir.path().join("comp.####.exr");
+    let result = run(&[
+        "over",
+        fg.to_str().unwrap(),
+        bg.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--frames",
+        "1-2",
+        "-q",
+    ]);
+    assert!(result.status.success(), "{}", stderr(&result));
+    for frame in 1..=2 {
+        let ours = read_image(&dir.path().join(format!("comp.{frame:04}.exr")));
+        let reference = reference_over(
+            &read_image(&dir.path().join(format!("fg.{frame:04}.exr"))),
+            &read_image(&beachball.join(format!("singlepart.{frame:04}.exr"))),
+            false,
+        );
+        assert!(ours.channels.len() > 4, "extra channels pass through");
+        assert_identical(&ours, &reference);
+        assert_peers_read(&dir.path().join(format!("comp.{frame:04}.exr")));
+    }
+}
+
+#[test]
+fn tiled_and_deep_inputs_are_refused_with_a_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.exr");
+    let images = shared_images();
+    for (input, reason) in [
+        ("Tiles/GoldenGate.exr", "tiled"),
+        ("v2/LowResLeftView/Balls.exr", "deep"),
+    ] {
+        let path = images.join(input);
+        let result = run(&[
+            "over",
+            path.to_str().unwrap(),
+            path.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(result.status.code(), Some(3));
+        assert!(stderr(&result).contains(reason), "{}", stderr(&result));
+        assert!(!out.exists());
+    }
+}

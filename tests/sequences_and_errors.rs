@@ -1,0 +1,268 @@
+//! Frame patterns and ranges, the run summary, and bad input: clear errors
+//! naming the file and frame, the right exit codes, nothing half-written.
+
+mod common;
+use common::*;
+use exr::prelude::LineOrder;
+use std::path::Path;
+
+fn write_sequence(dir: &Path, name: &str, frames: &[i64], seed: u64) {
+    for &frame in frames {
+        let img = random_rgba(seed + frame as u64, 0, 0, 24, 20, Kind::Half, false);
+        write_image(
+            &dir.join(format!("{name}.{frame:04}.exr")),
+            &img,
+            compression("zip"),
+            LineOrder::Increasing,
+        );
+    }
+}
+
+fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
+fn s(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+#[test]
+fn frames_default_to_those_on_disk_and_printf_patterns_work() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[7, 8, 10], 0);
+    write_sequence(d, "bg", &[7, 8, 9, 10], 100);
+    let out = run(&[
+        "over",
+        s(&d.join("fg.%04d.exr")),
+        s(&d.join("bg.####.exr")),
+        "-o",
+        s(&d.join("out/c.####.exr")),
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        entries(&d.join("out")),
+        ["c.0007.exr", "c.0008.exr", "c.0010.exr"]
+    );
+    let expected = reference_over(
+        &read_image(&d.join("fg.0010.exr")),
+        &read_image(&d.join("bg.0010.exr")),
+        false,
+    );
+    assert_identical(&read_image(&d.join("out/c.0010.exr")), &expected);
+}
+
+#[test]
+fn frame_lists_and_steps_select_frames() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1, 2, 3, 4, 5, 6], 0);
+    let out = run(&[
+        "over",
+        s(&d.join("fg.####.exr")),
+        s(&d.join("fg.####.exr")),
+        "-o",
+        s(&d.join("o/x.#.exr")),
+        "--frames",
+        "1-5:2,6",
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        entries(&d.join("o")),
+        ["x.1.exr", "x.3.exr", "x.5.exr", "x.6.exr"]
+    );
+}
+
+#[test]
+fn missing_frames_are_listed_before_any_work() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1, 2, 5], 0);
+    write_sequence(d, "bg", &[1, 2, 3, 4, 5], 100);
+    let out = run(&[
+        "over",
+        s(&d.join("fg.####.exr")),
+        s(&d.join("bg.####.exr")),
+        "-o",
+        s(&d.join("o/c.####.exr")),
+        "--frames",
+        "1-5",
+    ]);
+    assert_eq!(out.status.code(), Some(3));
+    let message = stderr(&out);
+    assert!(
+        message.contains("fg.####.exr") && message.contains("missing frames 3-4"),
+        "{message}"
+    );
+    assert!(!d.join("o").exists(), "nothing is written");
+}
+
+#[test]
+fn a_damaged_frame_stops_the_run_naming_file_and_frame_and_leaves_no_partial_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1, 2, 3], 0);
+    write_sequence(d, "bg", &[1, 2, 3], 100);
+    // Truncate frame 2 of the background in the middle of its pixel data.
+    let bad = d.join("bg.0002.exr");
+    let bytes = std::fs::read(&bad).unwrap();
+    std::fs::write(&bad, &bytes[..bytes.len() * 2 / 3]).unwrap();
+    let out = run(&[
+        "over",
+        s(&d.join("fg.####.exr")),
+        s(&d.join("bg.####.exr")),
+        "-o",
+        s(&d.join("o/c.####.exr")),
+        "-q",
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    let message = stderr(&out);
+    assert!(
+        message.contains("bg.0002.exr") && message.contains("frame 2"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    let written = entries(&d.join("o"));
+    assert!(
+        !written
+            .iter()
+            .any(|n| n.contains("0002") || n.contains("0003") || n.contains(".tmp")),
+        "{written:?}"
+    );
+}
+
+#[test]
+fn corrupted_pixel_data_is_an_error_not_a_crash() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let img = random_rgba(3, 0, 0, 64, 64, Kind::Half, false);
+    for c in ["zip", "piz", "rle", "zips"] {
+        let path = d.join(format!("{c}.exr"));
+        write_image(&path, &img, compression(c), LineOrder::Increasing);
+        let mut bytes = std::fs::read(&path).unwrap();
+        let len = bytes.len();
+        for i in (len * 3 / 4..len).step_by(7) {
+            bytes[i] ^= 0x5a;
+        }
+        std::fs::write(&path, &bytes).unwrap();
+        let output = d.join(format!("out-{c}.exr"));
+        let out = run(&["over", s(&path), s(&path), "-o", s(&output), "-q"]);
+        let message = stderr(&out);
+        assert!(!message.contains("panicked"), "{message}");
+        // ZIP data carries a checksum; PIZ and RLE have none, so damage can
+        // decode to wrong pixels (as in OpenEXR) but never crash.
+        if c.starts_with("zip") {
+            assert_eq!(out.status.code(), Some(3), "{c}: {message}");
+            assert!(message.contains(&format!("{c}.exr")), "{message}");
+            assert!(!output.exists());
+        } else {
+            assert!(matches!(out.status.code(), Some(0 | 3)), "{c}: {message}");
+        }
+    }
+}
+
+#[test]
+fn usage_errors_exit_2_and_bad_inputs_exit_3() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1, 2], 0);
+    let (fg, single, seq, none) = (
+        d.join("fg.####.exr"),
+        d.join("single.exr"),
+        d.join("o.#.exr"),
+        d.join("none.exr"),
+    );
+    let cases: Vec<(Vec<&str>, i32, &str)> = vec![
+        (
+            vec!["over", s(&fg), s(&fg), "-o", s(&single)],
+            2,
+            "no frame number",
+        ),
+        (
+            vec!["over", s(&fg), s(&fg), "-o", s(&fg)],
+            2,
+            "overwrite an input",
+        ),
+        (
+            vec!["over", s(&fg), s(&fg), "-o", s(&seq), "--frames", "9-1"],
+            2,
+            "bad frame range",
+        ),
+        (
+            vec![
+                "over",
+                s(&fg),
+                s(&fg),
+                "-o",
+                s(&seq),
+                "--compression",
+                "lzw",
+            ],
+            2,
+            "unknown compression",
+        ),
+        (
+            vec!["over", s(&none), s(&fg), "-o", s(&single)],
+            3,
+            "none.exr",
+        ),
+    ];
+    for (args, code, text) in cases {
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(code), "{args:?}: {}", stderr(&out));
+        assert!(stderr(&out).contains(text), "{args:?}: {}", stderr(&out));
+    }
+    std::fs::write(d.join("notes.exr"), "not an image").unwrap();
+    let out = run(&["info", s(&d.join("notes.exr"))]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(stderr(&out).contains("notes.exr"));
+}
+
+#[test]
+fn an_unwritable_output_exits_4_naming_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1], 0);
+    std::fs::write(d.join("blocker"), "a file where a folder should be").unwrap();
+    let target = d.join("blocker/c.####.exr");
+    let out = run(&[
+        "over",
+        s(&d.join("fg.####.exr")),
+        s(&d.join("fg.####.exr")),
+        "-o",
+        s(&target),
+        "-q",
+    ]);
+    assert_eq!(out.status.code(), Some(4), "{}", stderr(&out));
+    assert!(stderr(&out).contains("blocker"), "{}", stderr(&out));
+}
+
+#[test]
+fn json_summary_reports_frames_pixels_and_memory() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", &[1, 2, 3], 0);
+    let out = run(&[
+        "over",
+        s(&d.join("fg.####.exr")),
+        s(&d.join("fg.####.exr")),
+        "-o",
+        s(&d.join("c.####.exr")),
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let summary: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON record");
+    assert_eq!(summary["frames"], 3);
+    assert_eq!(summary["pixels"], 3 * 24 * 20);
+    assert!(summary["peak_rss_bytes"].as_u64().unwrap() > 1 << 20);
+    assert!(summary["pixels_per_second"].as_f64().unwrap() > 0.0);
+}
