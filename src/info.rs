@@ -120,7 +120,7 @@ fn check_chunks(file: &ExrFile, part: usize) -> Result<String> {
                     file.decode_chunk(part, k).map(drop)
                 }
             })?;
-        file.release_chunks(part, range);
+        file.release_bytes(file.chunk_bytes(part, range));
     }
     Ok(if header.deep {
         format!("all {count} chunks present, their sample counts consistent")

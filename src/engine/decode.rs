@@ -17,8 +17,13 @@ pub struct InputCursor {
     pub part: usize,
     /// The last decoded chunk, kept when it reaches into the next strip.
     carried: Option<(usize, UncompressedBlock)>,
-    /// Chunks below this index have been copied out and released.
-    released: usize,
+    /// Chunks below this index have been copied out.
+    done: usize,
+    /// The file bytes of all chunks copied out so far. The whole span is
+    /// released each time: the kernel maps pages around each fault (large
+    /// folios, fault-around), so pages of chunks released earlier come back
+    /// when neighbouring chunks are read. Releasing unmapped pages is cheap.
+    released: Option<Range<usize>>,
 }
 
 impl InputCursor {
@@ -27,7 +32,8 @@ impl InputCursor {
             file,
             part,
             carried: None,
-            released: 0,
+            done: 0,
+            released: None,
         }
     }
 
@@ -119,9 +125,15 @@ pub fn decode_strip(
             Some((k, _)) => *k,
             None => needed.end,
         };
-        if done > input.released {
-            input.file.release_chunks(input.part, input.released..done);
-            input.released = done;
+        if done > input.done {
+            let bytes = input.file.chunk_bytes(input.part, input.done..done);
+            let span = match input.released.take() {
+                Some(r) => r.start.min(bytes.start)..r.end.max(bytes.end),
+                None => bytes,
+            };
+            input.file.release_bytes(span.clone());
+            input.released = Some(span);
+            input.done = done;
         }
     }
     Ok(strips)

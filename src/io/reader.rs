@@ -208,7 +208,7 @@ impl ExrFile {
 
     /// The bytes chunks `indices` of `part` occupy in the file (assuming each
     /// chunk ends where the next-higher offset begins).
-    fn chunk_bytes(&self, part: usize, indices: Range<usize>) -> Range<usize> {
+    pub fn chunk_bytes(&self, part: usize, indices: Range<usize>) -> Range<usize> {
         let table = &self.offsets[part];
         let start = indices.clone().map(|i| table[i]).min().unwrap_or(0) as usize;
         let last = indices.map(|i| table[i]).max().unwrap_or(0);
@@ -220,14 +220,10 @@ impl ExrFile {
         start..end
     }
 
-    /// Drops the mapped pages of chunks we are done with, so that resident
-    /// memory does not grow with the file size. Pages shared with neighbouring
-    /// chunks are simply read again from the page cache if needed.
-    pub fn release_chunks(&self, part: usize, indices: Range<usize>) {
-        if indices.is_empty() {
-            return;
-        }
-        let bytes = self.chunk_bytes(part, indices);
+    /// Drops the mapped pages of `bytes`, so that resident memory does not
+    /// grow with the file size. A dropped page that is needed again is only
+    /// read back from the page cache.
+    pub fn release_bytes(&self, bytes: Range<usize>) {
         // SAFETY: the mapping is read-only and file-backed: dropped pages are
         // re-read from the file on the next access, with the same contents.
         let _ = unsafe {
