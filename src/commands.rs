@@ -34,14 +34,14 @@ pub fn run(command: Command) -> Result<()> {
                 ],
             };
             let job = input_job(inputs, &output, graph, 1, &run)?;
-            run_job(&job, "over", &run).map(drop)
+            run_job(&job, "over", &run)
         }
         Command::Transcode { input, output, run } => {
             let graph = Graph {
                 nodes: vec![Node::Input(0)],
             };
             let job = input_job(vec![FramePattern::parse(&input)], &output, graph, 0, &run)?;
-            run_job(&job, "transcode", &run).map(drop)
+            run_job(&job, "transcode", &run)
         }
         Command::Info { files } => info(&files),
         Command::Demo {
@@ -74,7 +74,7 @@ pub fn run(command: Command) -> Result<()> {
             };
             check_frame_count(&frames, &output)?;
             let job = plate_job(plate, output, frames, &run)?;
-            run_job(&job, "generate", &run).map(drop)
+            run_job(&job, "generate", &run)
         }
     }
 }
@@ -190,7 +190,13 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
     }))
 }
 
-fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<Summary> {
+fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<()> {
+    let (report, summary) = run_with_progress(job, label, run)?;
+    report.finish(&summary);
+    Ok(())
+}
+
+fn run_with_progress(job: &Job, label: &str, run: &RunArgs) -> Result<(Report, Summary)> {
     let report = Report::new(label, job.frames.len(), run.quiet, run.json);
     let pixels = AtomicU64::new(0);
     pipeline::run(job, |plan| {
@@ -202,8 +208,7 @@ fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<Summary> {
         pixels: pixels.into_inner(),
         seconds: report.elapsed(),
     };
-    report.finish(&summary);
-    Ok(summary)
+    Ok((report, summary))
 }
 
 fn info(files: &[std::path::PathBuf]) -> Result<()> {
@@ -239,17 +244,16 @@ fn info(files: &[std::path::PathBuf]) -> Result<()> {
 fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
     let first = 1001;
     let frames: Vec<i64> = (first..first + length as i64).collect();
-    let quiet_run = RunArgs {
-        frames: None,
-        compression: run.compression.clone(),
-        quiet: run.quiet || run.json,
-        json: false,
-        strip_rows: run.strip_rows,
-    };
     let pattern = |name: &str| {
         dir.join(format!("{name}.####.exr"))
             .to_string_lossy()
             .into_owned()
+    };
+    // The plates show a progress bar but no summary: the composite's is the point.
+    let plates = RunArgs {
+        quiet: run.quiet || run.json,
+        json: false,
+        ..run.clone()
     };
     for (name, kind) in [("fg", PlateKind::Fg), ("bg", PlateKind::Bg)] {
         let plate = Plate {
@@ -263,27 +267,33 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
             plate,
             FramePattern::parse(&pattern(name)),
             frames.clone(),
-            &quiet_run,
+            &plates,
         )?;
-        run_job(&job, &format!("writing {name}"), &quiet_run)?;
+        let (report, _) = run_with_progress(&job, &format!("writing {name}"), &plates)?;
+        report.clear();
+        if !plates.quiet {
+            let extra = if kind == PlateKind::Fg {
+                "Z, forward.u/v"
+            } else {
+                "Z"
+            };
+            eprintln!(
+                "wrote {} ({length} frames, {width}x{height} half RGBA + {extra})",
+                pattern(name)
+            );
+        }
     }
-    let over = RunArgs {
-        frames: Some(format!("{first}-{}", first + length as i64 - 1)),
-        ..run.clone()
-    };
-    if !run.quiet && !run.json {
-        eprintln!(
-            "compositing {} over {} into {}",
-            pattern("fg"),
-            pattern("bg"),
-            pattern("comp")
-        );
+    if !plates.quiet {
+        eprintln!("compositing fg over bg into {}", pattern("comp"));
     }
     self::run(Command::Over {
         fg: pattern("fg"),
         bg: pattern("bg"),
         output: pattern("comp"),
         straight: false,
-        run: over,
+        run: RunArgs {
+            frames: Some(format!("{first}-{}", first + length as i64 - 1)),
+            ..run.clone()
+        },
     })
 }

@@ -44,6 +44,10 @@ impl Report {
         }
     }
 
+    pub fn clear(&self) {
+        self.bar.finish_and_clear();
+    }
+
     pub fn frame_done(&self) {
         self.bar.inc(1);
     }
@@ -54,7 +58,7 @@ impl Report {
 
     /// Prints the summary: a line on stderr, and JSON on stdout with `json`.
     pub fn finish(&self, summary: &Summary) {
-        self.bar.finish_and_clear();
+        self.clear();
         let seconds = summary.seconds.max(1e-9);
         let rss = peak_rss_bytes();
         if self.json {
