@@ -22,21 +22,7 @@ thread_local! {
 /// Compresses little-endian block bytes; `None` when the result would not be
 /// smaller (EXR then stores the block raw).
 pub fn compress(raw: &[u8]) -> Option<Vec<u8>> {
-    let mut transformed = vec![0u8; raw.len()];
-    let half = raw.len().div_ceil(2);
-    let (first, second) = transformed.split_at_mut(half);
-    for (i, pair) in raw.chunks(2).enumerate() {
-        first[i] = pair[0];
-        if let Some(&odd) = pair.get(1) {
-            second[i] = odd;
-        }
-    }
-    let mut previous = transformed.first().copied().unwrap_or(0);
-    for byte in transformed.iter_mut().skip(1) {
-        let current = *byte;
-        *byte = current.wrapping_sub(previous).wrapping_add(128);
-        previous = current;
-    }
+    let transformed = transform(raw);
     COMPRESSOR.with(|c| {
         let mut c = c.borrow_mut();
         let mut out = vec![0u8; c.zlib_compress_bound(raw.len())];
@@ -60,34 +46,183 @@ pub fn decompress(compressed: &[u8], expected: usize) -> Result<Vec<u8>, String>
     Ok(untransform(transformed))
 }
 
+/// The byte split and the predictor: t = evens then odds; t[i] -= t[i-1] - 128.
+fn transform(raw: &[u8]) -> Vec<u8> {
+    let n = raw.len();
+    let mut t = vec![0u8; n];
+    let (first, second) = t.split_at_mut(n.div_ceil(2));
+    split(raw, first, second);
+    differences(&mut t);
+    t
+}
+
+/// first[i] = raw[2i], second[i] = raw[2i + 1].
+fn split(raw: &[u8], first: &mut [u8], second: &mut [u8]) {
+    #[allow(unused_mut)]
+    let mut done = 0;
+    #[cfg(target_arch = "x86_64")]
+    {
+        done = second.len() / 16 * 16;
+        simd::split(&raw[..2 * done], &mut first[..done], &mut second[..done]);
+    }
+    for (i, pair) in raw[2 * done..].chunks(2).enumerate() {
+        first[done + i] = pair[0];
+        if let Some(&odd) = pair.get(1) {
+            second[done + i] = odd;
+        }
+    }
+}
+
+/// t[i] = t[i] - t[i-1] + 128 for i >= 1, from the back so each byte still
+/// sees its predecessor's original value.
+fn differences(t: &mut [u8]) {
+    if t.is_empty() {
+        return;
+    }
+    // Whole 16-byte blocks cover indices 1 .. 1 + blocks; the rest is above.
+    let blocks = t.len().saturating_sub(1) / 16 * 16;
+    for i in (1 + blocks..t.len()).rev() {
+        t[i] = t[i].wrapping_sub(t[i - 1]).wrapping_add(128);
+    }
+    #[cfg(target_arch = "x86_64")]
+    simd::differences(&mut t[..1 + blocks]);
+    #[cfg(not(target_arch = "x86_64"))]
+    for i in (1..1 + blocks).rev() {
+        t[i] = t[i].wrapping_sub(t[i - 1]).wrapping_add(128);
+    }
+}
+
 /// Undoes the predictor and the byte split (shared with RLE, which uses both).
-pub fn untransform(transformed: Vec<u8>) -> Vec<u8> {
+pub fn untransform(mut transformed: Vec<u8>) -> Vec<u8> {
     let n = transformed.len();
-    if n < 2 {
-        return transformed;
-    }
+    running_sum(&mut transformed);
     let (first, second) = transformed.split_at(n.div_ceil(2));
-    // The predictor is a running sum through both halves. The value entering
-    // the second half is a plain sum, so the two halves then run as two
-    // independent chains, interleaved into place in one pass.
-    let mut even = first[0];
-    let mut odd = first[1..]
-        .iter()
-        .fold(even, |s, &d| s.wrapping_add(d).wrapping_sub(128));
     let mut raw = vec![0u8; n];
-    raw[0] = even;
-    let mut pairs = raw[1..].chunks_exact_mut(2);
-    for (out, (&d_odd, &d_even)) in (&mut pairs).zip(second.iter().zip(&first[1..])) {
-        odd = odd.wrapping_add(d_odd).wrapping_sub(128);
-        even = even.wrapping_add(d_even).wrapping_sub(128);
-        out[0] = odd;
-        out[1] = even;
-    }
-    // With an even length the second half has one byte more.
-    if let ([last], Some(&d_odd)) = (pairs.into_remainder(), second.last()) {
-        *last = odd.wrapping_add(d_odd).wrapping_sub(128);
-    }
+    interleave(first, second, &mut raw);
     raw
+}
+
+/// The predictor's inverse: s[0] = d[0], s[i] = s[i-1] + d[i] - 128. Written
+/// as a plain prefix sum of (d[i] - 128) seeded with 128.
+fn running_sum(bytes: &mut [u8]) {
+    let mut sum = 128u8;
+    #[cfg(target_arch = "x86_64")]
+    let bytes = {
+        let blocks = bytes.len() / 16 * 16;
+        sum = simd::running_sum(&mut bytes[..blocks], sum);
+        &mut bytes[blocks..]
+    };
+    for b in bytes {
+        sum = sum.wrapping_add(*b ^ 0x80);
+        *b = sum;
+    }
+}
+
+/// raw[2i] = first[i], raw[2i + 1] = second[i].
+fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
+    #[allow(unused_mut)]
+    let mut done = 0;
+    #[cfg(target_arch = "x86_64")]
+    {
+        done = second.len() / 16 * 16;
+        simd::interleave(&first[..done], &second[..done], &mut raw[..2 * done]);
+    }
+    for (i, out) in raw[2 * done..].chunks_mut(2).enumerate() {
+        out[0] = first[done + i];
+        if let Some(odd) = out.get_mut(1) {
+            *odd = second[done + i];
+        }
+    }
+}
+
+/// SSE2 (always present on x86_64) versions of the two loops, 16 bytes at a time.
+#[cfg(target_arch = "x86_64")]
+mod simd {
+    use std::arch::x86_64::*;
+
+    /// `bytes.len()` is a multiple of 16; returns the last sum.
+    pub fn running_sum(bytes: &mut [u8], seed: u8) -> u8 {
+        // SAFETY: SSE2 is part of x86_64; loads and stores are unaligned and
+        // stay inside `bytes` (whole 16-byte blocks).
+        unsafe {
+            let bias = _mm_set1_epi8(-128);
+            let mut carry = _mm_set1_epi8(seed as i8);
+            for block in bytes.chunks_exact_mut(16) {
+                let p = block.as_mut_ptr() as *mut __m128i;
+                let mut v = _mm_xor_si128(_mm_loadu_si128(p), bias);
+                v = _mm_add_epi8(v, _mm_slli_si128(v, 1));
+                v = _mm_add_epi8(v, _mm_slli_si128(v, 2));
+                v = _mm_add_epi8(v, _mm_slli_si128(v, 4));
+                v = _mm_add_epi8(v, _mm_slli_si128(v, 8));
+                v = _mm_add_epi8(v, carry);
+                _mm_storeu_si128(p, v);
+                // Broadcast byte 15 to all lanes.
+                let last = _mm_srli_si128(v, 15);
+                let last = _mm_unpacklo_epi8(last, last);
+                let last = _mm_unpacklo_epi16(last, last);
+                carry = _mm_shuffle_epi32(last, 0);
+            }
+            _mm_cvtsi128_si32(carry) as u8
+        }
+    }
+
+    /// `t.len()` is 1 + a multiple of 16; bytes 1.. become differences,
+    /// block by block from the back, so each block reads its predecessor's
+    /// bytes before they change.
+    pub fn differences(t: &mut [u8]) {
+        // SAFETY: as above; every access is inside `t` (j >= 1, j + 16 <= len).
+        unsafe {
+            let bias = _mm_set1_epi8(-128);
+            let base = t.as_mut_ptr();
+            let mut j = t.len();
+            while j >= 17 {
+                j -= 16;
+                let v = _mm_loadu_si128(base.add(j) as *const __m128i);
+                let previous = _mm_loadu_si128(base.add(j - 1) as *const __m128i);
+                let d = _mm_add_epi8(_mm_sub_epi8(v, previous), bias);
+                _mm_storeu_si128(base.add(j) as *mut __m128i, d);
+            }
+        }
+    }
+
+    /// `first` and `second` have the same length, a multiple of 16; `raw`
+    /// twice that.
+    pub fn split(raw: &[u8], first: &mut [u8], second: &mut [u8]) {
+        // SAFETY: as above.
+        unsafe {
+            let low = _mm_set1_epi16(0x00ff);
+            for ((pairs, a), b) in raw
+                .chunks_exact(32)
+                .zip(first.chunks_exact_mut(16))
+                .zip(second.chunks_exact_mut(16))
+            {
+                let v0 = _mm_loadu_si128(pairs.as_ptr() as *const __m128i);
+                let v1 = _mm_loadu_si128(pairs.as_ptr().add(16) as *const __m128i);
+                let evens = _mm_packus_epi16(_mm_and_si128(v0, low), _mm_and_si128(v1, low));
+                let odds = _mm_packus_epi16(_mm_srli_epi16(v0, 8), _mm_srli_epi16(v1, 8));
+                _mm_storeu_si128(a.as_mut_ptr() as *mut __m128i, evens);
+                _mm_storeu_si128(b.as_mut_ptr() as *mut __m128i, odds);
+            }
+        }
+    }
+
+    /// `first` and `second` have the same length, a multiple of 16.
+    pub fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
+        // SAFETY: as above; `raw` is twice as long as each half.
+        unsafe {
+            for ((a, b), out) in first
+                .chunks_exact(16)
+                .zip(second.chunks_exact(16))
+                .zip(raw.chunks_exact_mut(32))
+            {
+                let a = _mm_loadu_si128(a.as_ptr() as *const __m128i);
+                let b = _mm_loadu_si128(b.as_ptr() as *const __m128i);
+                let out = out.as_mut_ptr() as *mut __m128i;
+                _mm_storeu_si128(out, _mm_unpacklo_epi8(a, b));
+                _mm_storeu_si128(out.add(1), _mm_unpackhi_epi8(a, b));
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -96,11 +231,58 @@ mod tests {
 
     #[test]
     fn round_trips_odd_and_even_lengths() {
-        for len in [1usize, 2, 3, 100, 1001] {
+        for len in [1usize, 2, 3, 15, 16, 17, 31, 32, 33, 64, 100, 1001, 4099] {
             let raw: Vec<u8> = (0..len).map(|i| ((i * 7) % 13) as u8).collect();
-            if let Some(packed) = compress(&raw) {
-                assert_eq!(decompress(&packed, len).unwrap(), raw);
+            match compress(&raw) {
+                Some(packed) => assert_eq!(decompress(&packed, len).unwrap(), raw),
+                None => assert!(len < 64, "a repetitive block of {len} bytes must shrink"),
             }
+        }
+    }
+
+    #[test]
+    fn untransform_matches_the_naive_definition() {
+        let mut seed = 12345u32;
+        for len in [0usize, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 100, 1001, 4099] {
+            let t: Vec<u8> = (0..len)
+                .map(|_| {
+                    seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                    (seed >> 24) as u8
+                })
+                .collect();
+            let mut sums = t.clone();
+            for i in 1..len {
+                sums[i] = sums[i - 1].wrapping_add(t[i]).wrapping_sub(128);
+            }
+            let half = len.div_ceil(2);
+            let naive: Vec<u8> = (0..len)
+                .map(|i| {
+                    if i % 2 == 0 {
+                        sums[i / 2]
+                    } else {
+                        sums[half + i / 2]
+                    }
+                })
+                .collect();
+            assert_eq!(untransform(t), naive, "length {len}");
+        }
+    }
+
+    #[test]
+    fn transform_matches_the_naive_definition() {
+        for len in [0usize, 1, 2, 3, 31, 32, 33, 64, 65, 1001] {
+            let raw: Vec<u8> = (0..len).map(|i| (i * i * 31 % 251) as u8).collect();
+            let mut t: Vec<u8> = raw
+                .iter()
+                .step_by(2)
+                .chain(raw.iter().skip(1).step_by(2))
+                .copied()
+                .collect();
+            for i in (1..len).rev() {
+                t[i] = t[i].wrapping_sub(t[i - 1]).wrapping_add(128);
+            }
+            assert_eq!(transform(&raw), t, "length {len}");
+            assert_eq!(untransform(t), raw, "length {len}");
         }
     }
 
