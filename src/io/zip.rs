@@ -58,13 +58,14 @@ fn transform(raw: &[u8]) -> Vec<u8> {
 
 /// first[i] = raw[2i], second[i] = raw[2i + 1].
 fn split(raw: &[u8], first: &mut [u8], second: &mut [u8]) {
-    #[allow(unused_mut)]
-    let mut done = 0;
     #[cfg(target_arch = "x86_64")]
-    {
-        done = second.len() / 16 * 16;
+    let done = {
+        let done = second.len() / 16 * 16;
         simd::split(&raw[..2 * done], &mut first[..done], &mut second[..done]);
-    }
+        done
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    let done = 0;
     for (i, pair) in raw[2 * done..].chunks(2).enumerate() {
         first[done + i] = pair[0];
         if let Some(&odd) = pair.get(1) {
@@ -120,13 +121,14 @@ fn running_sum(bytes: &mut [u8]) {
 
 /// raw[2i] = first[i], raw[2i + 1] = second[i].
 fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
-    #[allow(unused_mut)]
-    let mut done = 0;
     #[cfg(target_arch = "x86_64")]
-    {
-        done = second.len() / 16 * 16;
+    let done = {
+        let done = second.len() / 16 * 16;
         simd::interleave(&first[..done], &second[..done], &mut raw[..2 * done]);
-    }
+        done
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    let done = 0;
     for (i, out) in raw[2 * done..].chunks_mut(2).enumerate() {
         out[0] = first[done + i];
         if let Some(odd) = out.get_mut(1) {
