@@ -101,5 +101,5 @@ fn unpack_rle(packed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
             out.len()
         ));
     }
-    Ok(zip::untransform(out))
+    Ok(zip::untransform(&mut out))
 }
