@@ -93,6 +93,11 @@ pub struct RunArgs {
     /// (default: the background's).
     #[arg(long)]
     pub compression: Option<String>,
+    /// Effort for ZIP and ZIPS output, 1 (fastest) to 12 (smallest). The
+    /// default 2 writes files within 2.5% of OpenEXR's size; 1 is some 13%
+    /// faster but can be 5% larger on smooth images.
+    #[arg(long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
+    pub zip_level: u8,
     /// No progress bar and no summary.
     #[arg(long, short)]
     pub quiet: bool,

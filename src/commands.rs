@@ -135,6 +135,7 @@ fn input_job(
         compression: parse_compression(run)?,
         header_base: HeaderBase::Input(header_from),
         strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
     })
 }
 
@@ -164,6 +165,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
         strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
     })
 }
 

@@ -194,3 +194,22 @@ fn background_attributes_and_display_window_are_kept() {
     );
     assert_eq!((window.size.width(), window.size.height()), (38, 28));
 }
+
+#[test]
+fn zip_levels_change_the_size_not_the_pixels() {
+    let dir = tempfile::tempdir().unwrap();
+    let fg = random_rgba(15, 0, 0, 64, 64, Kind::Half, false);
+    let bg = random_rgba(16, 0, 0, 64, 64, Kind::Half, true);
+    let (fast, reference) = composite(dir.path(), &fg, &bg, "zip", &["--zip-level", "1"]);
+    assert_identical(&fast, &reference);
+    let fast_size = std::fs::metadata(dir.path().join("out.exr")).unwrap().len();
+    let (small, _) = composite(dir.path(), &fg, &bg, "zip", &["--zip-level", "12"]);
+    assert_identical(&small, &reference);
+    let small_size = std::fs::metadata(dir.path().join("out.exr")).unwrap().len();
+    assert!(
+        small_size < fast_size,
+        "level 12: {small_size} B, level 1: {fast_size} B"
+    );
+    let out = run(&["over", "a.exr", "b.exr", "-o", "c.exr", "--zip-level", "13"]);
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -17,8 +17,8 @@ pub struct IndexedChunk {
 }
 
 /// Compresses `rows` (which start on a block boundary of `header`'s data
-/// window) into chunks.
-pub fn encode_rows(rows: &Rows, header: &Header) -> Result<Vec<IndexedChunk>> {
+/// window) into chunks; ZIP and ZIPS at libdeflate level `zip_level`.
+pub fn encode_rows(rows: &Rows, header: &Header, zip_level: u8) -> Result<Vec<IndexedChunk>> {
     let window = header.data_window();
     let lines = header.compression.scan_lines_per_block();
     let first_row = (rows.y - window.position.y()) as usize;
@@ -50,7 +50,7 @@ pub fn encode_rows(rows: &Rows, header: &Header) -> Result<Vec<IndexedChunk>> {
             if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
                 return Ok(IndexedChunk {
                     index: first_row / lines + b,
-                    chunk: scanline_chunk(y0, zip::compress(&data).unwrap_or(data)),
+                    chunk: scanline_chunk(y0, zip::compress(&data, zip_level).unwrap_or(data)),
                 });
             }
             let block = UncompressedBlock {

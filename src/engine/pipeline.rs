@@ -43,7 +43,7 @@ pub fn run(job: &Job, frame_done: impl Fn(&FramePlan) + Sync) -> Result<()> {
         let stages = [
             scope.spawn(|| decode_stage(job, decoded_tx)),
             scope.spawn(|| compose_stage(job, decoded_rx, composed_tx)),
-            scope.spawn(|| encode_stage(composed_rx, encoded_tx)),
+            scope.spawn(|| encode_stage(job, composed_rx, encoded_tx)),
             scope.spawn(|| write_stage(encoded_rx, &frame_done)),
         ];
         stages.map(|stage| {
@@ -121,7 +121,11 @@ fn compose_stage(
     Ok(())
 }
 
-fn encode_stage(rx: Receiver<Msg<Rows>>, tx: Sender<Msg<Vec<IndexedChunk>>>) -> Result<()> {
+fn encode_stage(
+    job: &Job,
+    rx: Receiver<Msg<Rows>>,
+    tx: Sender<Msg<Vec<IndexedChunk>>>,
+) -> Result<()> {
     let mut plan: Option<Arc<FramePlan>> = None;
     while let Some(msg) = receive(&rx) {
         let out = match msg {
@@ -133,7 +137,7 @@ fn encode_stage(rx: Receiver<Msg<Rows>>, tx: Sender<Msg<Vec<IndexedChunk>>>) -> 
                 let plan = plan
                     .as_ref()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
-                Msg::Strip(encode_rows(&rows, &plan.header)?)
+                Msg::Strip(encode_rows(&rows, &plan.header, job.zip_level)?)
             }
             Msg::End => Msg::End,
         };

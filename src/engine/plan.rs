@@ -28,6 +28,8 @@ pub struct Job {
     pub header_base: HeaderBase,
     /// Rows per strip (rounded up to whole blocks); `None` sizes by bytes.
     pub strip_rows: Option<usize>,
+    /// libdeflate level for ZIP and ZIPS output.
+    pub zip_level: u8,
 }
 
 /// Where the output header's attributes come from.

@@ -14,11 +14,11 @@ compile_error!("the codecs here take native-endian samples to be little-endian")
 /// writes what our level 4 writes): grainy 4K plates +0.5%, the ScanLines and
 /// Beachball photographs +0.3% to +2.4%, for 6% less time than level 4;
 /// level 1 would save 13% more but makes photographs 5.6% larger.
-const LEVEL: i32 = 2;
+pub const DEFAULT_LEVEL: u8 = 2;
 
 thread_local! {
-    static COMPRESSOR: RefCell<Compressor> =
-        RefCell::new(Compressor::new(CompressionLvl::new(LEVEL).expect("valid level")));
+    /// This thread's compressor and the level it was made for.
+    static COMPRESSOR: RefCell<Option<(u8, Compressor)>> = const { RefCell::new(None) };
     /// Per-thread buffers for the transformed bytes and the deflate output:
     /// reused, so blocks cost no fresh zeroed pages.
     static SCRATCH: RefCell<(Vec<u8>, Vec<u8>)> = const { RefCell::new((Vec::new(), Vec::new())) };
@@ -33,15 +33,21 @@ fn scratch(buffer: &mut Vec<u8>, len: usize) -> &mut [u8] {
     &mut buffer[..len]
 }
 
-/// Compresses little-endian block bytes; `None` when the result would not be
-/// smaller (EXR then stores the block raw).
-pub fn compress(raw: &[u8]) -> Option<Vec<u8>> {
+/// Compresses little-endian block bytes at libdeflate `level` (1-12); `None`
+/// when the result would not be smaller (EXR then stores the block raw).
+pub fn compress(raw: &[u8], level: u8) -> Option<Vec<u8>> {
     SCRATCH.with(|buffers| {
         let (transformed, out) = &mut *buffers.borrow_mut();
         let transformed = scratch(transformed, raw.len());
         transform(raw, transformed);
         COMPRESSOR.with(|c| {
             let mut c = c.borrow_mut();
+            if c.as_ref().is_none_or(|(l, _)| *l != level) {
+                let lvl =
+                    CompressionLvl::new(level.into()).expect("level checked by the command line");
+                *c = Some((level, Compressor::new(lvl)));
+            }
+            let (_, c) = c.as_mut().expect("just made");
             let out = scratch(out, c.zlib_compress_bound(raw.len()));
             let size = c.zlib_compress(transformed, out).ok()?;
             (size < raw.len()).then(|| out[..size].to_vec())
@@ -252,7 +258,7 @@ mod tests {
     fn round_trips_odd_and_even_lengths() {
         for len in [1usize, 2, 3, 15, 16, 17, 31, 32, 33, 64, 100, 1001, 4099] {
             let raw: Vec<u8> = (0..len).map(|i| ((i * 7) % 13) as u8).collect();
-            match compress(&raw) {
+            match compress(&raw, DEFAULT_LEVEL) {
                 Some(packed) => assert_eq!(decompress(&packed, len).unwrap(), raw),
                 None => assert!(len < 64, "a repetitive block of {len} bytes must shrink"),
             }
