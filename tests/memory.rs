@@ -9,23 +9,20 @@ mod common;
 use common::*;
 use std::path::Path;
 
-fn generate(dir: &Path, name: &str, kind: &str, width: usize, height: usize, frames: &str) {
-    let pattern = dir.join(format!("{name}.####.exr"));
-    let (w, h) = (width.to_string(), height.to_string());
-    let out = run(&[
-        "generate",
-        pattern.to_str().unwrap(),
-        "--kind",
+fn generate_sequence(
+    dir: &Path,
+    name: &str,
+    kind: &str,
+    width: usize,
+    height: usize,
+    frames: &str,
+) {
+    generate(
+        &dir.join(format!("{name}.####.exr")),
         kind,
-        "--width",
-        &w,
-        "--height",
-        &h,
-        "--frames",
-        frames,
-        "-q",
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+        (width, height),
+        &["--frames", frames],
+    );
 }
 
 /// Peak RSS of an `over` run, as the run's JSON summary reports it.
@@ -50,10 +47,10 @@ fn over_peak_rss(dir: &Path, fg: &str, bg: &str, frames: &str) -> u64 {
 fn peak_memory_does_not_grow_with_height() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    generate(d, "fs", "fg", 1024, 1024, "1");
-    generate(d, "bs", "bg", 1024, 1024, "1");
-    generate(d, "ft", "fg", 1024, 8192, "1");
-    generate(d, "bt", "bg", 1024, 8192, "1");
+    generate_sequence(d, "fs", "fg", 1024, 1024, "1");
+    generate_sequence(d, "bs", "bg", 1024, 1024, "1");
+    generate_sequence(d, "ft", "fg", 1024, 8192, "1");
+    generate_sequence(d, "bt", "bg", 1024, 8192, "1");
     let short = (0..3)
         .map(|_| over_peak_rss(d, "fs.####.exr", "bs.####.exr", "1"))
         .max()
@@ -70,8 +67,8 @@ fn peak_memory_does_not_grow_with_height() {
 fn peak_memory_does_not_grow_with_frames() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    generate(d, "f", "fg", 1024, 512, "1-16");
-    generate(d, "b", "bg", 1024, 512, "1-16");
+    generate_sequence(d, "f", "fg", 1024, 512, "1-16");
+    generate_sequence(d, "b", "bg", 1024, 512, "1-16");
     let few = (0..3)
         .map(|_| over_peak_rss(d, "f.####.exr", "b.####.exr", "1-2"))
         .max()

@@ -213,3 +213,27 @@ fn zip_levels_change_the_size_not_the_pixels() {
     let out = run(&["over", "a.exr", "b.exr", "-o", "c.exr", "--zip-level", "13"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn where_the_foreground_adds_nothing_the_background_stays_bit_for_bit() {
+    // -0 in B survives under transparent black A, whole rows or single pixels.
+    let dir = tempfile::tempdir().unwrap();
+    let mut fg = random_rgba(17, 0, 0, 16, 8, Kind::Half, false);
+    let mut bg = random_rgba(18, 0, 0, 16, 8, Kind::Half, false);
+    for name in ["R", "G", "B", "A"] {
+        let Samples::F16(v) = fg.channels.get_mut(name).unwrap() else {
+            unreachable!()
+        };
+        v[..16 * 4].fill(half::f16::ZERO); // rows 0-3 transparent black
+        v[16 * 5 + 3] = half::f16::ZERO; // and one pixel of row 5
+        let Samples::F16(v) = bg.channels.get_mut(name).unwrap() else {
+            unreachable!()
+        };
+        v.fill(half::f16::NEG_ZERO);
+    }
+    let (ours, reference) = composite(dir.path(), &fg, &bg, "zip", &[]);
+    assert_identical(&ours, &reference);
+    for i in (0..16 * 4).chain([16 * 5 + 3]) {
+        assert_eq!(ours.channels["G"].bits(i), 0x8000, "pixel {i} keeps B's -0");
+    }
+}

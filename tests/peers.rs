@@ -6,26 +6,6 @@ use common::*;
 use std::path::Path;
 use std::process::Command;
 
-fn generate(path: &Path, kind: &str, size: (usize, usize), origin: &str, pixel_type: &str) {
-    let (w, h) = (size.0.to_string(), size.1.to_string());
-    let out = run(&[
-        "generate",
-        path.to_str().unwrap(),
-        "--kind",
-        kind,
-        "--width",
-        &w,
-        "--height",
-        &h,
-        "--origin",
-        origin,
-        "--pixel-type",
-        pixel_type,
-        "-q",
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
-}
-
 /// `idiff -fail 0`: every pixel of every channel identical.
 fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
     let out = Command::new(idiff)
@@ -51,8 +31,18 @@ fn over_equals_oiiotool_over_with_offset_data_windows() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     for pixel_type in ["half", "float"] {
-        generate(&d.join("fg.exr"), "fg", (200, 100), "13,-7", pixel_type);
-        generate(&d.join("bg.exr"), "bg", (180, 120), "-5,4", pixel_type);
+        generate(
+            &d.join("fg.exr"),
+            "fg",
+            (200, 100),
+            &["--origin", "13,-7", "--pixel-type", pixel_type],
+        );
+        generate(
+            &d.join("bg.exr"),
+            "bg",
+            (180, 120),
+            &["--origin", "-5,4", "--pixel-type", pixel_type],
+        );
         let out = run(&[
             "over",
             d.join("fg.exr").to_str().unwrap(),
@@ -89,8 +79,8 @@ fn every_output_compression_decodes_in_openexr() {
     let Some(idiff) = peer("idiff") else { return };
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    generate(&d.join("fg.exr"), "fg", (97, 61), "3,2", "half");
-    generate(&d.join("bg.exr"), "bg", (90, 70), "0,0", "half");
+    generate(&d.join("fg.exr"), "fg", (97, 61), &["--origin", "3,2"]);
+    generate(&d.join("bg.exr"), "bg", (90, 70), &["--origin", "0,0"]);
     let over = |compression: &str, out: &Path| {
         let result = run(&[
             "over",

@@ -34,14 +34,35 @@ impl Op for Over {
         let mut f = vec![0.0f32; w];
         let mut b = vec![0.0f32; w];
         for y in out.y..out.end() {
-            fg.alpha_f32(y, &mut fa);
             bg.alpha_f32(y, &mut ba);
             let dst = out.row_range(y);
+            if !self.straight && transparent_black(fg, y) {
+                // Nothing of A here: B's row as it is (what the formula gives).
+                for c in 0..out.channels.len() {
+                    match bg.channel_index(&out.channels[c].name.to_string()) {
+                        Some(src) => {
+                            let bytes = bg.planes[src].bytes(bg.row_range(y));
+                            out.planes[c].bytes_mut(dst.clone()).copy_from_slice(bytes);
+                        }
+                        // An alpha only A has: B's implicit alpha; colours stay 0.
+                        None if out.channels[c].name.eq("A") => {
+                            out.planes[c].write_f32(dst.clone(), &ba)
+                        }
+                        None => {}
+                    }
+                }
+                continue;
+            }
+            fg.alpha_f32(y, &mut fa);
             for c in 0..out.channels.len() {
                 let name = out.channels[c].name.to_string();
                 if name == "A" {
                     for x in 0..w {
-                        f[x] = fa[x] + (1.0 - fa[x]) * ba[x];
+                        f[x] = if fa[x] == 0.0 {
+                            ba[x]
+                        } else {
+                            fa[x] + (1.0 - fa[x]) * ba[x]
+                        };
                     }
                 } else if COLOUR.contains(&name.as_str()) {
                     read_or_zero(fg, &name, y, &mut f);
@@ -71,11 +92,35 @@ fn read_or_zero(rows: &Rows, name: &str, y: i32, out: &mut [f32]) {
     }
 }
 
-/// C = Cf + (1 - af) Cb, in place in `f`.
+/// C = Cf + (1 - af) Cb, in place in `f`; exactly Cb where A adds nothing
+/// (af = Cf = 0), which the sum gives too but for a -0 in B.
 fn over_premultiplied(f: &mut [f32], b: &[f32], fa: &[f32]) {
     for ((f, &b), &fa) in f.iter_mut().zip(b).zip(fa) {
-        *f += (1.0 - fa) * b;
+        *f = if fa == 0.0 && *f == 0.0 {
+            b
+        } else {
+            *f + (1.0 - fa) * b
+        };
     }
+}
+
+/// Whether A is transparent black across row `y`: outside its data window,
+/// or with an alpha channel and every colour and alpha sample +0.
+fn transparent_black(rows: &Rows, y: i32) -> bool {
+    let v = rows.valid;
+    if y < v.position.y() || y >= v.end().y() {
+        return true;
+    }
+    rows.channel_index("A").is_some()
+        && ["R", "G", "B", "A"]
+            .iter()
+            .filter_map(|n| rows.channel_index(n))
+            .all(|c| {
+                let bytes = rows.planes[c].bytes(rows.row_range(y));
+                bytes
+                    .chunks(64)
+                    .all(|chunk| chunk.iter().fold(0, |acc, &b| acc | b) == 0)
+            })
 }
 
 /// Premultiply both, composite, unpremultiply by the composite alpha

@@ -19,6 +19,25 @@ pub fn run(args: &[&str]) -> Output {
     exrcomp().args(args).output().expect("exrcomp runs")
 }
 
+/// `exrcomp generate PATH --kind KIND --width W --height H ARGS... -q`.
+pub fn generate(path: &Path, kind: &str, (width, height): (usize, usize), args: &[&str]) {
+    let (w, h) = (width.to_string(), height.to_string());
+    let mut command = vec![
+        "generate",
+        path.to_str().unwrap(),
+        "--kind",
+        kind,
+        "--width",
+        &w,
+        "--height",
+        &h,
+        "-q",
+    ];
+    command.extend_from_slice(args);
+    let out = run(&command);
+    assert!(out.status.success(), "{}", stderr(&out));
+}
+
 pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
@@ -278,7 +297,9 @@ pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
                 let i = (y - y0) as usize * width + (x - x0) as usize;
                 let fa = alpha_at(fg, x, y);
                 let ba = alpha_at(bg, x, y);
+                // Where A adds nothing (alpha and value 0), B's value as it is.
                 match name.as_str() {
+                    "A" if fa == 0.0 => out.set_f32(i, ba),
                     "A" => out.set_f32(i, fa + (1.0 - fa) * ba),
                     "R" | "G" | "B" => {
                         let f = value_at(fg, name, x, y);
@@ -291,6 +312,8 @@ pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
                             } else {
                                 p / a
                             }
+                        } else if fa == 0.0 && f == 0.0 {
+                            b
                         } else {
                             f + (1.0 - fa) * b
                         };
