@@ -98,6 +98,17 @@ pub struct RunArgs {
     /// faster but can be 5% larger on smooth images.
     #[arg(long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
+    /// What a missing input frame does: error (before any work), skip the
+    /// output frame, hold the nearest earlier frame, or black.
+    #[arg(long, value_enum, default_value = "error")]
+    pub missing: crate::engine::sources::MissingPolicy,
+    /// Skip frames whose output already exists and decodes completely.
+    #[arg(long)]
+    pub resume: bool,
+    /// Report a frame with bad input and go on with the others (the exit
+    /// code is still non-zero).
+    #[arg(long)]
+    pub keep_going: bool,
     /// No progress bar and no summary.
     #[arg(long, short)]
     pub quiet: bool,

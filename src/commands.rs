@@ -2,8 +2,11 @@
 
 use crate::cli::{Command, RunArgs};
 use crate::engine::graph::{Graph, Node, Op};
+use crate::engine::interrupt;
 use crate::engine::pipeline;
-use crate::engine::plan::{HeaderBase, Job};
+use crate::engine::pipeline::Events;
+use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job};
+use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
@@ -11,7 +14,7 @@ use crate::ops::over::Over;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
 use std::path::Path;
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
 
 pub fn run(command: Command) -> Result<()> {
     match command {
@@ -33,15 +36,16 @@ pub fn run(command: Command) -> Result<()> {
                     },
                 ],
             };
-            let job = input_job(inputs, &output, graph, 1, &run)?;
-            run_job(&job, "over", &run)
+            let (job, summary) = input_job(inputs, &output, graph, 1, &run)?;
+            run_job(&job, "over", &run, summary)
         }
         Command::Transcode { input, output, run } => {
             let graph = Graph {
                 nodes: vec![Node::Input(0)],
             };
-            let job = input_job(vec![FramePattern::parse(&input)], &output, graph, 0, &run)?;
-            run_job(&job, "transcode", &run)
+            let (job, summary) =
+                input_job(vec![FramePattern::parse(&input)], &output, graph, 0, &run)?;
+            run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files } => info(&files),
         Command::Demo {
@@ -74,7 +78,7 @@ pub fn run(command: Command) -> Result<()> {
             };
             check_frame_count(&frames, &output)?;
             let job = plate_job(plate, output, frames, &run)?;
-            run_job(&job, "generate", &run)
+            run_job(&job, "generate", &run, Summary::default())
         }
     }
 }
@@ -86,7 +90,7 @@ fn input_job(
     graph: Graph,
     header_from: usize,
     run: &RunArgs,
-) -> Result<Job> {
+) -> Result<(Job, Summary)> {
     let output = FramePattern::parse(output);
     let frames = match &run.frames {
         Some(text) => parse_frame_list(text)?,
@@ -104,39 +108,32 @@ fn input_job(
     };
     check_frame_count(&frames, &output)?;
     for input in &inputs {
-        if (0..frames.len()).any(|i| input.path(frames[i]) == output.path(frames[i])) {
+        if frames.iter().any(|&f| input.path(f) == output.path(f)) {
             return Err(Error::usage(format!(
                 "the output {} would overwrite an input",
                 output.display()
             )));
         }
-        let missing: Vec<i64> = frames
-            .iter()
-            .copied()
-            .filter(|&f| !input.path(f).exists())
-            .collect();
-        if !missing.is_empty() {
-            let what = if input.is_sequence() {
-                format!("missing frames {}", format_frame_list(&missing))
-            } else {
-                "no such file".to_string()
-            };
-            return Err(Error::new(
-                Kind::Input,
-                format!("{}: {what}", input.display()),
-            ));
-        }
     }
-    Ok(Job {
+    let resolved = resolve(&inputs, &frames, run.missing)?;
+    let job = Job {
         inputs,
         output,
-        frames,
+        frames: resolved.frames,
         graph,
         compression: parse_compression(run)?,
         header_base: HeaderBase::Input(header_from),
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
-    })
+        resume: run.resume,
+        keep_going: run.keep_going,
+    };
+    let summary = Summary {
+        skipped: resolved.skipped,
+        replaced: resolved.replaced,
+        ..Summary::default()
+    };
+    Ok((job, summary))
 }
 
 fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
@@ -155,7 +152,13 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
     Ok(Job {
         inputs: Vec::new(),
         output,
-        frames,
+        frames: frames
+            .into_iter()
+            .map(|frame| FrameSources {
+                frame,
+                inputs: Vec::new(),
+            })
+            .collect(),
         graph: Graph {
             nodes: vec![Node::Op {
                 op: Box::new(plate) as Box<dyn Op>,
@@ -166,6 +169,8 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         header_base: HeaderBase::New(display),
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
+        resume: run.resume,
+        keep_going: run.keep_going,
     })
 }
 
@@ -192,25 +197,84 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
     }))
 }
 
-fn run_job(job: &Job, label: &str, run: &RunArgs) -> Result<()> {
-    let (report, summary) = run_with_progress(job, label, run)?;
+/// Runs `job`, prints its summary, and turns failed frames or an
+/// interruption into the run's error (and exit code).
+fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
+    let (report, summary) = run_with_progress(job, label, run, summary)?;
     report.finish(&summary);
+    if summary.interrupted {
+        return Err(Error::new(
+            Kind::Interrupted,
+            "interrupted; no partial frame was left",
+        ));
+    }
+    if !summary.failed.is_empty() {
+        let frames: Vec<i64> = summary.failed.iter().map(|(f, _)| *f).collect();
+        return Err(Error::new(
+            Kind::Input,
+            format!(
+                "{} frames failed: {}",
+                frames.len(),
+                format_frame_list(&frames)
+            ),
+        ));
+    }
     Ok(())
 }
 
-fn run_with_progress(job: &Job, label: &str, run: &RunArgs) -> Result<(Report, Summary)> {
+fn run_with_progress(
+    job: &Job,
+    label: &str,
+    run: &RunArgs,
+    summary: Summary,
+) -> Result<(Report, Summary)> {
     let report = Report::new(label, job.frames.len(), run.quiet, run.json);
-    let pixels = AtomicU64::new(0);
-    pipeline::run(job, |plan| {
-        pixels.fetch_add(plan.pixels() as u64, Ordering::Relaxed);
-        report.frame_done();
-    })?;
-    let summary = Summary {
-        frames: job.frames.len(),
-        pixels: pixels.into_inner(),
-        seconds: report.elapsed(),
+    let events = Progress {
+        report: &report,
+        frame_label: |f| job.frame_label(f),
+        summary: Mutex::new(summary),
     };
+    pipeline::run(job, &events)?;
+    let mut summary = events
+        .summary
+        .into_inner()
+        .expect("no panic while holding it");
+    summary.seconds = report.elapsed();
+    summary.interrupted = interrupt::requested();
     Ok((report, summary))
+}
+
+/// Collects the run's events into its summary and moves the progress bar.
+struct Progress<'a, L> {
+    report: &'a Report,
+    frame_label: L,
+    summary: Mutex<Summary>,
+}
+
+impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
+    fn written(&self, plan: &FramePlan) {
+        let mut summary = self.summary.lock().expect("not poisoned");
+        summary.frames += 1;
+        summary.pixels += plan.pixels() as u64;
+        self.report.frame_done();
+    }
+
+    fn kept(&self, frame: i64) {
+        self.summary.lock().expect("not poisoned").kept.push(frame);
+        self.report.frame_done();
+    }
+
+    fn failed(&self, frame: i64, error: &Error) {
+        let label = (self.frame_label)(frame).map_or(String::new(), |f| format!(" {f}"));
+        self.report
+            .note(&format!("exrcomp: frame{label} failed, going on: {error}"));
+        self.summary
+            .lock()
+            .expect("not poisoned")
+            .failed
+            .push((frame, error.message.clone()));
+        self.report.frame_done();
+    }
 }
 
 fn info(files: &[std::path::PathBuf]) -> Result<()> {
@@ -271,7 +335,12 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
             frames.clone(),
             &plates,
         )?;
-        let (report, _) = run_with_progress(&job, &format!("writing {name}"), &plates)?;
+        let (report, _) = run_with_progress(
+            &job,
+            &format!("writing {name}"),
+            &plates,
+            Summary::default(),
+        )?;
         report.clear();
         if !plates.quiet {
             let extra = if kind == PlateKind::Fg {

@@ -15,6 +15,8 @@ pub enum Kind {
     Internal,
     /// A pipeline stage stopped because another one failed; that one reports.
     Stopped,
+    /// Ctrl-C or SIGTERM.
+    Interrupted,
 }
 
 impl Kind {
@@ -25,6 +27,7 @@ impl Kind {
             Kind::Usage => 2,
             Kind::Input => 3,
             Kind::Output => 4,
+            Kind::Interrupted => crate::engine::interrupt::EXIT_CODE,
         }
     }
 }

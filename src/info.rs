@@ -5,7 +5,6 @@ use crate::io::reader::ExrFile;
 use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::meta::BlockDescription;
-use rayon::prelude::*;
 use std::fmt::Write;
 use std::path::Path;
 
@@ -103,26 +102,10 @@ fn window(w: IntegerBounds) -> String {
     )
 }
 
-/// Decodes every chunk of `part` in parallel batches (bounded memory).
 fn check_chunks(file: &ExrFile, part: usize) -> Result<String> {
-    let header = file.header(part);
-    let count = header.chunk_count;
-    let batch = rayon::current_num_threads() * 4;
-    for start in (0..count).step_by(batch) {
-        let range = start..(start + batch).min(count);
-        range
-            .clone()
-            .into_par_iter()
-            .try_for_each(|k| -> Result<()> {
-                if header.deep {
-                    file.check_deep_chunk(part, k)
-                } else {
-                    file.decode_chunk(part, k).map(drop)
-                }
-            })?;
-        file.release_bytes(file.chunk_bytes(part, range));
-    }
-    Ok(if header.deep {
+    file.check_part(part)?;
+    let count = file.header(part).chunk_count;
+    Ok(if file.header(part).deep {
         format!("all {count} chunks present, their sample counts consistent")
     } else {
         format!("all {count} chunks decode")

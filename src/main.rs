@@ -3,6 +3,7 @@ use exrcomp::cli::Cli;
 
 fn main() {
     let cli = Cli::parse();
+    exrcomp::engine::interrupt::install();
     if let Some(threads) = cli.threads {
         // Only fails if the pool exists already, which it cannot here.
         let _ = rayon::ThreadPoolBuilder::new()

@@ -11,10 +11,21 @@ pub struct Report {
 }
 
 /// What a finished run did.
+#[derive(Default)]
 pub struct Summary {
+    /// Frames written.
     pub frames: usize,
     pub pixels: u64,
     pub seconds: f64,
+    /// Frames whose complete output was kept (--resume).
+    pub kept: Vec<i64>,
+    /// Frames that failed on bad input (--keep-going), with the reason.
+    pub failed: Vec<(i64, String)>,
+    /// Output frames left out for a missing input (--missing skip).
+    pub skipped: Vec<i64>,
+    /// Input frames held or made black (--missing hold|black).
+    pub replaced: Vec<String>,
+    pub interrupted: bool,
 }
 
 impl Report {
@@ -52,6 +63,17 @@ impl Report {
         self.bar.inc(1);
     }
 
+    /// A line above the progress bar (or plain, without one).
+    pub fn note(&self, line: &str) {
+        if self.bar.is_hidden() {
+            if !self.json {
+                eprintln!("{line}");
+            }
+        } else {
+            self.bar.suspend(|| eprintln!("{line}"));
+        }
+    }
+
     pub fn elapsed(&self) -> f64 {
         self.started.elapsed().as_secs_f64()
     }
@@ -62,6 +84,11 @@ impl Report {
         let seconds = summary.seconds.max(1e-9);
         let rss = peak_rss_bytes();
         if self.json {
+            let failed: Vec<_> = summary
+                .failed
+                .iter()
+                .map(|(frame, reason)| serde_json::json!({"frame": frame, "error": reason}))
+                .collect();
             let record = serde_json::json!({
                 "frames": summary.frames,
                 "seconds": summary.seconds,
@@ -69,9 +96,38 @@ impl Report {
                 "pixels": summary.pixels,
                 "pixels_per_second": summary.pixels as f64 / seconds,
                 "peak_rss_bytes": rss,
+                "kept": summary.kept,
+                "failed": failed,
+                "skipped_missing": summary.skipped,
+                "replaced_missing": summary.replaced,
+                "interrupted": summary.interrupted,
             });
             println!("{record}");
-        } else if !self.quiet {
+            return;
+        }
+        if !summary.kept.is_empty() {
+            eprintln!(
+                "{} frames already complete, kept (--resume)",
+                summary.kept.len()
+            );
+        }
+        if !summary.skipped.is_empty() {
+            eprintln!(
+                "{} frames left out for missing input: {:?}",
+                summary.skipped.len(),
+                summary.skipped
+            );
+        }
+        for line in &summary.replaced {
+            eprintln!("{line}");
+        }
+        for (frame, reason) in &summary.failed {
+            eprintln!("frame {frame} failed: {reason}");
+        }
+        if summary.interrupted {
+            eprintln!("interrupted after {} frames", summary.frames);
+        }
+        if !self.quiet {
             eprintln!(
                 "{} frames in {:.2} s: {:.2} frames/s, {:.1} Mpixels/s, peak memory {}",
                 summary.frames,

@@ -15,6 +15,8 @@ use std::sync::Arc;
 pub struct InputCursor {
     pub file: Arc<ExrFile>,
     pub part: usize,
+    /// The data window read from: empty for a black input.
+    window: IntegerBounds,
     /// The last decoded chunk, kept when it reaches into the next strip.
     carried: Option<(usize, UncompressedBlock)>,
     /// Chunks below this index have been copied out.
@@ -27,10 +29,12 @@ pub struct InputCursor {
 }
 
 impl InputCursor {
-    pub fn new(file: Arc<ExrFile>, part: usize) -> Self {
+    /// `window`: the file's data window, or an empty one to read nothing.
+    pub fn new(file: Arc<ExrFile>, part: usize, window: IntegerBounds) -> Self {
         InputCursor {
             file,
             part,
+            window,
             carried: None,
             done: 0,
             released: None,
@@ -38,7 +42,7 @@ impl InputCursor {
     }
 
     fn data_window(&self) -> IntegerBounds {
-        self.file.header(self.part).data_window()
+        self.window
     }
 
     fn lines_per_chunk(&self) -> usize {

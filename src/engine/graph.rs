@@ -84,7 +84,14 @@ impl Graph {
     }
 }
 
+/// The smallest window holding both; an empty window adds nothing.
 pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
+    if a.size.area() == 0 {
+        return b;
+    }
+    if b.size.area() == 0 {
+        return a;
+    }
     let x0 = a.position.x().min(b.position.x());
     let y0 = a.position.y().min(b.position.y());
     let x1 = a.end().x().max(b.end().x());

@@ -4,6 +4,8 @@ pub mod compose;
 pub mod decode;
 pub mod encode;
 pub mod graph;
+pub mod interrupt;
 pub mod pipeline;
 pub mod plan;
+pub mod sources;
 pub mod strip;

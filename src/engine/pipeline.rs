@@ -6,9 +6,11 @@
 use super::compose::Composer;
 use super::decode::{decode_strip, InputCursor};
 use super::encode::{encode_rows, IndexedChunk};
-use super::plan::{plan_frame, FramePlan, Job};
+use super::interrupt;
+use super::plan::{plan_frame, FramePlan, FrameSources, Job};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
+use crate::io::reader::ExrFile;
 use crate::io::writer::write_file;
 use crossbeam_channel::{bounded, Receiver, Sender};
 use std::ops::Range;
@@ -21,6 +23,19 @@ enum Msg<T> {
     Begin(Arc<FramePlan>),
     Strip(T),
     End,
+    /// The frame begun is abandoned (bad input with --keep-going, or an
+    /// interruption): its temporary file is removed.
+    Abort,
+}
+
+/// What a run tells its caller as it goes.
+pub trait Events: Sync {
+    /// An output frame is in place.
+    fn written(&self, plan: &FramePlan);
+    /// A frame's output already exists complete (--resume).
+    fn kept(&self, frame: i64);
+    /// A frame failed on bad input and the run goes on (--keep-going).
+    fn failed(&self, frame: i64, error: &Error);
 }
 
 /// Receiving side of a stage: `None` once the upstream stage has stopped.
@@ -34,17 +49,18 @@ fn send<T>(tx: &Sender<Msg<T>>, msg: Msg<T>) -> bool {
     tx.send(msg).is_ok()
 }
 
-/// Runs `job`, calling `frame_done` after each output file is in place.
-pub fn run(job: &Job, frame_done: impl Fn(&FramePlan) + Sync) -> Result<()> {
+/// Runs `job`, reporting each frame to `events`. Stops early, without an
+/// error, when an interruption is requested (`interrupt::requested`).
+pub fn run(job: &Job, events: &impl Events) -> Result<()> {
     let (decoded_tx, decoded_rx) = bounded::<Msg<(Range<i32>, Vec<Rows>)>>(CHANNEL_STRIPS);
     let (composed_tx, composed_rx) = bounded::<Msg<Rows>>(CHANNEL_STRIPS);
     let (encoded_tx, encoded_rx) = bounded::<Msg<Vec<IndexedChunk>>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
-            scope.spawn(|| decode_stage(job, decoded_tx)),
+            scope.spawn(|| decode_stage(job, events, decoded_tx)),
             scope.spawn(|| compose_stage(job, decoded_rx, composed_tx)),
             scope.spawn(|| encode_stage(job, composed_rx, encoded_tx)),
-            scope.spawn(|| write_stage(encoded_rx, &frame_done)),
+            scope.spawn(|| write_stage(encoded_rx, events)),
         ];
         stages.map(|stage| {
             stage
@@ -56,30 +72,79 @@ pub fn run(job: &Job, frame_done: impl Fn(&FramePlan) + Sync) -> Result<()> {
     results.into_iter().collect::<Result<Vec<()>>>().map(drop)
 }
 
-fn decode_stage(job: &Job, tx: Sender<Msg<(Range<i32>, Vec<Rows>)>>) -> Result<()> {
-    for &frame in &job.frames {
-        let plan = Arc::new(plan_frame(job, frame)?);
-        let mut cursors: Vec<InputCursor> = plan
-            .inputs
-            .iter()
-            .map(|file| InputCursor::new(file.clone(), 0))
-            .collect();
-        let window = plan.window();
-        let columns = (window.position.x(), window.size.width());
-        if !send(&tx, Msg::Begin(plan.clone())) {
-            return Ok(());
+fn decode_stage(
+    job: &Job,
+    events: &impl Events,
+    tx: Sender<Msg<(Range<i32>, Vec<Rows>)>>,
+) -> Result<()> {
+    for sources in &job.frames {
+        if interrupt::requested() {
+            break;
         }
-        for rows in plan.strips() {
-            let strips = decode_strip(&mut cursors, columns, rows.clone())?;
-            if !send(&tx, Msg::Strip((rows, strips))) {
+        if job.resume && output_complete(&job.output.path(sources.frame)) {
+            events.kept(sources.frame);
+            continue;
+        }
+        let mut begun = false;
+        match decode_frame(job, sources, &tx, &mut begun) {
+            Ok(true) => {}
+            // Downstream has stopped (and reports why) or we were interrupted.
+            Ok(false) => {
+                if begun {
+                    send(&tx, Msg::Abort);
+                }
                 return Ok(());
             }
-        }
-        if !send(&tx, Msg::End) {
-            return Ok(());
+            Err(e) if job.keep_going && e.kind == Kind::Input => {
+                if begun && !send(&tx, Msg::Abort) {
+                    return Ok(());
+                }
+                events.failed(sources.frame, &e);
+            }
+            Err(e) => return Err(e),
         }
     }
     Ok(())
+}
+
+/// Sends one frame downstream; `Ok(false)` when it had to stop part-way.
+fn decode_frame(
+    job: &Job,
+    sources: &FrameSources,
+    tx: &Sender<Msg<(Range<i32>, Vec<Rows>)>>,
+    begun: &mut bool,
+) -> Result<bool> {
+    let plan = Arc::new(plan_frame(job, sources)?);
+    let mut cursors: Vec<InputCursor> = plan
+        .inputs
+        .iter()
+        .enumerate()
+        .map(|(i, file)| InputCursor::new(file.clone(), 0, plan.windows[i]))
+        .collect();
+    let window = plan.window();
+    let columns = (window.position.x(), window.size.width());
+    if !send(tx, Msg::Begin(plan.clone())) {
+        return Ok(false);
+    }
+    *begun = true;
+    for rows in plan.strips() {
+        if interrupt::requested() {
+            return Ok(false);
+        }
+        let strips = decode_strip(&mut cursors, columns, rows.clone())?;
+        if !send(tx, Msg::Strip((rows, strips))) {
+            return Ok(false);
+        }
+    }
+    Ok(send(tx, Msg::End))
+}
+
+/// Whether `path` holds a complete EXR file: a valid header and offset table,
+/// and every chunk decodes.
+fn output_complete(path: &std::path::Path) -> bool {
+    ExrFile::open(path, None)
+        .and_then(|file| file.check_part(0))
+        .is_ok()
 }
 
 fn compose_stage(
@@ -113,6 +178,10 @@ fn compose_stage(
                 }
             }
             Msg::End => Msg::End,
+            Msg::Abort => {
+                composer = None;
+                Msg::Abort
+            }
         };
         if !send(&tx, out) {
             break;
@@ -140,6 +209,7 @@ fn encode_stage(
                 Msg::Strip(encode_rows(&rows, &plan.header, job.zip_level)?)
             }
             Msg::End => Msg::End,
+            Msg::Abort => Msg::Abort,
         };
         if !send(&tx, out) {
             break;
@@ -148,23 +218,29 @@ fn encode_stage(
     Ok(())
 }
 
-fn write_stage(
-    rx: Receiver<Msg<Vec<IndexedChunk>>>,
-    frame_done: &(impl Fn(&FramePlan) + Sync),
-) -> Result<()> {
+fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Result<()> {
     while let Some(msg) = receive(&rx) {
-        let Msg::Begin(plan) = msg else {
-            return Err(Error::internal("frame data without a frame"));
+        let plan = match msg {
+            Msg::Begin(plan) => plan,
+            Msg::Abort => continue,
+            _ => return Err(Error::internal("frame data without a frame")),
         };
+        let mut abandoned = false;
         let next = || match receive(&rx) {
             Some(Msg::Strip(chunks)) => Ok(Some(chunks)),
             Some(Msg::End) => Ok(None),
+            Some(Msg::Abort) => {
+                abandoned = true;
+                Err(Error::stopped())
+            }
             Some(Msg::Begin(_)) => Err(Error::internal("frame begun inside a frame")),
             None => Err(Error::stopped()),
         };
         match write_file(&plan.output, plan.label, plan.header.clone(), next) {
-            Ok(()) => frame_done(&plan),
-            // An earlier stage failed and reports why; the half-written frame is gone.
+            Ok(()) => events.written(&plan),
+            // The temporary file is gone; an abandoned frame is reported upstream.
+            Err(e) if e.kind == Kind::Stopped && abandoned => continue,
+            // An earlier stage failed and reports why.
             Err(e) if e.kind == Kind::Stopped => return Ok(()),
             Err(e) => return Err(e),
         }

@@ -2,7 +2,7 @@
 //! data window, the output header, and the strip height.
 
 use super::graph::Graph;
-use crate::error::Result;
+use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
 use crate::io::sequence::FramePattern;
 use exr::meta::attribute::Text;
@@ -21,7 +21,8 @@ const STRIP_BYTES: usize = 1 << 20;
 pub struct Job {
     pub inputs: Vec<FramePattern>,
     pub output: FramePattern,
-    pub frames: Vec<i64>,
+    /// Per output frame, where each input comes from.
+    pub frames: Vec<FrameSources>,
     pub graph: Graph,
     /// Output compression; `None` keeps that of the input the header comes from.
     pub compression: Option<Compression>,
@@ -30,6 +31,34 @@ pub struct Job {
     pub strip_rows: Option<usize>,
     /// libdeflate level for ZIP and ZIPS output.
     pub zip_level: u8,
+    /// Skip frames whose output exists and decodes completely.
+    pub resume: bool,
+    /// A frame whose input is bad is reported and the run goes on.
+    pub keep_going: bool,
+}
+
+/// One output frame and, per input, the frame it reads.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameSources {
+    pub frame: i64,
+    pub inputs: Vec<Source>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Source {
+    /// This frame of the input sequence.
+    Frame(i64),
+    /// Transparent black, shaped like this frame of the input (its header,
+    /// channels and display window).
+    Black(i64),
+}
+
+impl Source {
+    pub fn file_frame(self) -> i64 {
+        match self {
+            Source::Frame(f) | Source::Black(f) => f,
+        }
+    }
 }
 
 /// Where the output header's attributes come from.
@@ -79,18 +108,26 @@ impl FramePlan {
     }
 }
 
-/// Opens the inputs of `frame` and plans its output.
-pub fn plan_frame(job: &Job, frame: i64) -> Result<FramePlan> {
+/// Opens the inputs of `sources.frame` and plans its output.
+pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
+    let frame = sources.frame;
     let label = job.frame_label(frame);
     let inputs: Vec<Arc<ExrFile>> = job
         .inputs
         .iter()
-        .map(|pattern| {
-            let file = ExrFile::open(&pattern.path(frame), label)?;
+        .zip(&sources.inputs)
+        .map(|(pattern, source)| {
+            let at = source.file_frame();
+            let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
             check_readable(&file)?;
             Ok(Arc::new(file))
         })
         .collect::<Result<_>>()?;
+    // A black input has no data anywhere: an empty data window.
+    let input_window = |i: usize| match sources.inputs[i] {
+        Source::Frame(_) => inputs[i].header(0).data_window(),
+        Source::Black(_) => IntegerBounds::zero(),
+    };
 
     let graph: &Graph = &job.graph;
     let channels = graph.evaluate(
@@ -100,11 +137,14 @@ pub fn plan_frame(job: &Job, frame: i64) -> Result<FramePlan> {
             op.channels(&lists)
         },
     );
-    let windows = graph.evaluate(
-        |i| inputs[i].header(0).data_window(),
-        |op, args| op.data_window(args),
-    );
+    let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
     let window = windows[graph.output()];
+    if window.size.area() == 0 {
+        return Err(Error::new(
+            Kind::Input,
+            format!("frame {frame}: every input is black: nothing to write"),
+        ));
+    }
 
     let mut header = match job.header_base {
         HeaderBase::Input(i) => inputs[i].header(0).clone(),

@@ -13,6 +13,7 @@ use exr::meta::BlockDescription;
 use exr::meta::MetaData;
 use exr::prelude::Compression;
 use memmap2::{Mmap, UncheckedAdvice};
+use rayon::prelude::*;
 use std::fs::File;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -204,6 +205,28 @@ impl ExrFile {
             }
             _ => Ok(()),
         }
+    }
+
+    /// Decodes every chunk of `part` (deep chunks: checks their structure), in
+    /// parallel batches so memory stays bounded.
+    pub fn check_part(&self, part: usize) -> Result<()> {
+        let count = self.header(part).chunk_count;
+        let batch = rayon::current_num_threads() * 4;
+        for start in (0..count).step_by(batch) {
+            let range = start..(start + batch).min(count);
+            range
+                .clone()
+                .into_par_iter()
+                .try_for_each(|k| -> Result<()> {
+                    if self.header(part).deep {
+                        self.check_deep_chunk(part, k)
+                    } else {
+                        self.decode_chunk(part, k).map(drop)
+                    }
+                })?;
+            self.release_bytes(self.chunk_bytes(part, range));
+        }
+        Ok(())
     }
 
     /// The bytes chunks `indices` of `part` occupy in the file (assuming each
