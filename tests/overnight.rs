@@ -1,0 +1,308 @@
+//! Overnight safety: missing frames, bad frames, resuming, interruptions,
+//! full disks; nothing half-written ever sits at an output path.
+
+mod common;
+use common::*;
+use exr::prelude::LineOrder;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::Duration;
+
+fn s(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+fn write_frames(dir: &Path, name: &str, frames: impl IntoIterator<Item = i64>, seed: u64) {
+    for frame in frames {
+        let img = random_rgba(seed + frame as u64, 0, 0, 48, 40, Kind::Half, false);
+        write_image(
+            &dir.join(format!("{name}.{frame:04}.exr")),
+            &img,
+            compression("zip"),
+            LineOrder::Increasing,
+        );
+    }
+}
+
+fn frame_path(dir: &Path, name: &str, frame: i64) -> PathBuf {
+    dir.join(format!("{name}.{frame:04}.exr"))
+}
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|_| panic!("no JSON summary: {}", stderr(out)))
+}
+
+/// Every file at an output path decodes completely (exrcomp's own check,
+/// and OpenEXR's where the peers are installed).
+fn assert_outputs_complete(dir: &Path) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if name.starts_with('.') {
+            continue; // a temporary name, never an output path
+        }
+        let out = run(&["info", s(&path)]);
+        assert!(
+            out.status.success(),
+            "partial or bad output {name}: {}",
+            stderr(&out)
+        );
+    }
+}
+
+#[test]
+fn missing_frames_skip_hold_or_black() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_frames(d, "fg", [1, 2, 4], 0);
+    write_frames(d, "bg", 1..=4, 100);
+    let over = |policy: &str, out: &str| {
+        run(&[
+            "over",
+            s(&d.join("fg.####.exr")),
+            s(&d.join("bg.####.exr")),
+            "-o",
+            s(&d.join(out)),
+            "--frames",
+            "1-4",
+            "--missing",
+            policy,
+            "--json",
+        ])
+    };
+    let out = over("skip", "skip/c.####.exr");
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(json(&out)["skipped_missing"], serde_json::json!([3]));
+    assert!(
+        !frame_path(&d.join("skip"), "c", 3).exists()
+            && frame_path(&d.join("skip"), "c", 4).exists()
+    );
+
+    let out = over("hold", "hold/c.####.exr");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let held = reference_over(
+        &read_image(&frame_path(d, "fg", 2)),
+        &read_image(&frame_path(d, "bg", 3)),
+        false,
+    );
+    assert_identical(&read_image(&frame_path(&d.join("hold"), "c", 3)), &held);
+
+    let out = over("black", "black/c.####.exr");
+    assert!(out.status.success(), "{}", stderr(&out));
+    // Transparent black over B is B.
+    assert_identical(
+        &read_image(&frame_path(&d.join("black"), "c", 3)),
+        &read_image(&frame_path(d, "bg", 3)),
+    );
+
+    let out = over("error", "error/c.####.exr");
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        stderr(&out).contains("missing frames 3"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn keep_going_reports_bad_frames_and_writes_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_frames(d, "bg", 1..=5, 0);
+    let bad = frame_path(d, "bg", 3);
+    let bytes = std::fs::read(&bad).unwrap();
+    std::fs::write(&bad, &bytes[..bytes.len() / 2]).unwrap();
+    let out = run(&[
+        "transcode",
+        s(&d.join("bg.####.exr")),
+        "-o",
+        s(&d.join("o/t.####.exr")),
+        "--keep-going",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    let summary = json(&out);
+    assert_eq!(summary["frames"], 4);
+    assert_eq!(summary["failed"][0]["frame"], 3);
+    assert!(summary["failed"][0]["error"]
+        .as_str()
+        .unwrap()
+        .contains("bg.0003.exr"));
+    for frame in [1, 2, 4, 5] {
+        assert!(frame_path(&d.join("o"), "t", frame).exists());
+    }
+    assert!(!frame_path(&d.join("o"), "t", 3).exists());
+    assert_outputs_complete(&d.join("o"));
+    let leftovers: Vec<_> = std::fs::read_dir(d.join("o"))
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .file_name()
+                .to_string_lossy()
+                .ends_with(".tmp")
+        })
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
+}
+
+#[test]
+fn resume_redoes_only_missing_or_damaged_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_frames(d, "fg", 1..=6, 0);
+    write_frames(d, "bg", 1..=6, 100);
+    let (fg, bg) = (d.join("fg.####.exr"), d.join("bg.####.exr"));
+    let over = |out: &str, extra: &[&str]| {
+        let mut args = vec!["over", s(&fg), s(&bg), "-o", out, "--json"];
+        args.extend_from_slice(extra);
+        let result = run(&args);
+        assert!(result.status.success(), "{}", stderr(&result));
+        json(&result)
+    };
+    let pattern = d.join("o/c.####.exr");
+    over(s(&pattern), &[]);
+    let original: Vec<Vec<u8>> = (1..=6)
+        .map(|f| std::fs::read(frame_path(&d.join("o"), "c", f)).unwrap())
+        .collect();
+    std::fs::remove_file(frame_path(&d.join("o"), "c", 2)).unwrap();
+    let damaged = frame_path(&d.join("o"), "c", 5);
+    std::fs::write(&damaged, &original[4][..original[4].len() - 10]).unwrap();
+    let summary = over(s(&pattern), &["--resume"]);
+    assert_eq!(summary["kept"], serde_json::json!([1, 3, 4, 6]));
+    assert_eq!(summary["frames"], 2);
+    for f in 1..=6 {
+        assert_eq!(
+            std::fs::read(frame_path(&d.join("o"), "c", f)).unwrap(),
+            original[f as usize - 1],
+            "frame {f}"
+        );
+    }
+}
+
+/// Starts a 30-frame transcode, signals it after `after`, and returns its exit status.
+fn interrupted_run(d: &Path, signal: &str, after: Duration) -> std::process::ExitStatus {
+    let mut child = exrcomp()
+        .args([
+            "transcode",
+            s(&d.join("in.####.exr")),
+            "-o",
+            s(&d.join("o/t.####.exr")),
+            "-q",
+            "--compression",
+            "piz",
+            "--strip-rows",
+            "1",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(after);
+    Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status()
+        .unwrap();
+    child.wait().unwrap()
+}
+
+#[test]
+fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let img = random_rgba(7, 0, 0, 256, 256, Kind::Float, true);
+    for frame in 1..=30 {
+        write_image(
+            &frame_path(d, "in", frame),
+            &img,
+            compression("zip"),
+            LineOrder::Increasing,
+        );
+    }
+    // The uninterrupted result.
+    let whole = run(&[
+        "transcode",
+        s(&d.join("in.####.exr")),
+        "-o",
+        s(&d.join("ref/t.####.exr")),
+        "-q",
+        "--compression",
+        "piz",
+    ]);
+    assert!(whole.status.success(), "{}", stderr(&whole));
+    let mut seed = Lcg(99);
+    for (round, signal) in ["-INT", "-KILL", "-TERM", "-KILL", "-INT"]
+        .iter()
+        .enumerate()
+    {
+        let after = Duration::from_millis(50 + (seed.next() * 600.0) as u64);
+        let status = interrupted_run(d, signal, after);
+        if *signal != "-KILL" && !status.success() {
+            assert_eq!(
+                status.code(),
+                Some(130),
+                "round {round}: {signal} gives exit 130"
+            );
+        }
+        assert_outputs_complete(&d.join("o"));
+    }
+    let resumed = run(&[
+        "transcode",
+        s(&d.join("in.####.exr")),
+        "-o",
+        s(&d.join("o/t.####.exr")),
+        "-q",
+        "--compression",
+        "piz",
+        "--resume",
+    ]);
+    assert!(resumed.status.success(), "{}", stderr(&resumed));
+    for frame in 1..=30 {
+        let a = std::fs::read(frame_path(&d.join("o"), "t", frame)).unwrap();
+        let b = std::fs::read(frame_path(&d.join("ref"), "t", frame)).unwrap();
+        assert!(a == b, "frame {frame} differs from the uninterrupted run");
+    }
+}
+
+#[test]
+fn a_full_disk_is_a_clear_output_error_with_nothing_left_behind() {
+    let dir = tempfile::tempdir().unwrap();
+    let mount = dir.path().join("small");
+    std::fs::create_dir(&mount).unwrap();
+    let mounted = Command::new("mount")
+        .args(["-t", "tmpfs", "-o", "size=256k", "tmpfs", s(&mount)])
+        .status();
+    if !mounted.is_ok_and(|s| s.success()) {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must be able to mount a small tmpfs for the full-disk test"
+        );
+        eprintln!("SKIPPED: cannot mount a small tmpfs here (needs root)");
+        return;
+    }
+    let img = random_rgba(8, 0, 0, 300, 300, Kind::Float, true);
+    let input = dir.path().join("in.exr");
+    write_image(&input, &img, compression("none"), LineOrder::Increasing);
+    let target = mount.join("out.exr");
+    let out = run(&[
+        "transcode",
+        s(&input),
+        "-o",
+        s(&target),
+        "--compression",
+        "none",
+    ]);
+    let listing: Vec<_> = std::fs::read_dir(&mount)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    Command::new("umount").arg(&mount).status().unwrap();
+    assert_eq!(out.status.code(), Some(4), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("out.exr") && stderr(&out).contains("No space left"),
+        "{}",
+        stderr(&out)
+    );
+    assert!(listing.is_empty(), "left behind: {listing:?}");
+}
