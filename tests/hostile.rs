@@ -6,20 +6,7 @@
 mod common;
 use common::*;
 use std::path::Path;
-use std::process::Command;
 use std::time::{Duration, Instant};
-
-/// Runs exrcomp under a 4 GiB address-space limit (an allocation sized from
-/// a damaged header would abort the process instead of passing quietly).
-fn limited(args: &[&str]) -> std::process::Output {
-    Command::new("sh")
-        .arg("-c")
-        .arg("ulimit -v 4194304; exec \"$0\" \"$@\"")
-        .arg(env!("CARGO_BIN_EXE_exrcomp"))
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 fn check(path: &Path, truncated: bool) {
     let started = Instant::now();

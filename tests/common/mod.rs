@@ -38,6 +38,18 @@ pub fn generate(path: &Path, kind: &str, (width, height): (usize, usize), args: 
     assert!(out.status.success(), "{}", stderr(&out));
 }
 
+/// Runs exrcomp under a 4 GiB address-space limit (an allocation sized from
+/// a damaged header would abort the process instead of passing quietly).
+pub fn limited(args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 4194304; exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_exrcomp"))
+        .args(args)
+        .output()
+        .expect("sh runs")
+}
+
 pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
