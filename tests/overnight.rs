@@ -8,22 +8,6 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;
 
-fn s(path: &Path) -> &str {
-    path.to_str().unwrap()
-}
-
-fn write_frames(dir: &Path, name: &str, frames: impl IntoIterator<Item = i64>, seed: u64) {
-    for frame in frames {
-        let img = random_rgba(seed + frame as u64, 0, 0, 48, 40, Kind::Half, false);
-        write_image(
-            &dir.join(format!("{name}.{frame:04}.exr")),
-            &img,
-            compression("zip"),
-            LineOrder::Increasing,
-        );
-    }
-}
-
 fn frame_path(dir: &Path, name: &str, frame: i64) -> PathBuf {
     dir.join(format!("{name}.{frame:04}.exr"))
 }
@@ -55,8 +39,8 @@ fn assert_outputs_complete(dir: &Path) {
 fn missing_frames_skip_hold_or_black() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_frames(d, "fg", [1, 2, 4], 0);
-    write_frames(d, "bg", 1..=4, 100);
+    write_sequence(d, "fg", [1, 2, 4], 0);
+    write_sequence(d, "bg", 1..=4, 100);
     let over = |policy: &str, out: &str| {
         run(&[
             "over",
@@ -109,7 +93,7 @@ fn missing_frames_skip_hold_or_black() {
 fn keep_going_reports_bad_frames_and_writes_the_rest() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_frames(d, "bg", 1..=5, 0);
+    write_sequence(d, "bg", 1..=5, 0);
     let bad = frame_path(d, "bg", 3);
     let bytes = std::fs::read(&bad).unwrap();
     std::fs::write(&bad, &bytes[..bytes.len() / 2]).unwrap();
@@ -151,8 +135,8 @@ fn keep_going_reports_bad_frames_and_writes_the_rest() {
 fn resume_redoes_only_missing_or_damaged_outputs() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_frames(d, "fg", 1..=6, 0);
-    write_frames(d, "bg", 1..=6, 100);
+    write_sequence(d, "fg", 1..=6, 0);
+    write_sequence(d, "bg", 1..=6, 100);
     let (fg, bg) = (d.join("fg.####.exr"), d.join("bg.####.exr"));
     let over = |out: &str, extra: &[&str]| {
         let mut args = vec!["over", s(&fg), s(&bg), "-o", out, "--json"];

@@ -6,18 +6,6 @@ use common::*;
 use exr::prelude::LineOrder;
 use std::path::Path;
 
-fn write_sequence(dir: &Path, name: &str, frames: &[i64], seed: u64) {
-    for &frame in frames {
-        let img = random_rgba(seed + frame as u64, 0, 0, 24, 20, Kind::Half, false);
-        write_image(
-            &dir.join(format!("{name}.{frame:04}.exr")),
-            &img,
-            compression("zip"),
-            LineOrder::Increasing,
-        );
-    }
-}
-
 fn entries(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
         .map(|d| {
@@ -29,16 +17,12 @@ fn entries(dir: &Path) -> Vec<String> {
     names
 }
 
-fn s(path: &Path) -> &str {
-    path.to_str().unwrap()
-}
-
 #[test]
 fn frames_default_to_those_on_disk_and_printf_patterns_work() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[7, 8, 10], 0);
-    write_sequence(d, "bg", &[7, 8, 9, 10], 100);
+    write_sequence(d, "fg", [7, 8, 10], 0);
+    write_sequence(d, "bg", [7, 8, 9, 10], 100);
     let out = run(&[
         "over",
         s(&d.join("fg.%04d.exr")),
@@ -64,7 +48,7 @@ fn frames_default_to_those_on_disk_and_printf_patterns_work() {
 fn frame_lists_and_steps_select_frames() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1, 2, 3, 4, 5, 6], 0);
+    write_sequence(d, "fg", [1, 2, 3, 4, 5, 6], 0);
     let out = run(&[
         "over",
         s(&d.join("fg.####.exr")),
@@ -86,8 +70,8 @@ fn frame_lists_and_steps_select_frames() {
 fn missing_frames_are_listed_before_any_work() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1, 2, 5], 0);
-    write_sequence(d, "bg", &[1, 2, 3, 4, 5], 100);
+    write_sequence(d, "fg", [1, 2, 5], 0);
+    write_sequence(d, "bg", [1, 2, 3, 4, 5], 100);
     let out = run(&[
         "over",
         s(&d.join("fg.####.exr")),
@@ -110,8 +94,8 @@ fn missing_frames_are_listed_before_any_work() {
 fn a_damaged_frame_stops_the_run_naming_file_and_frame_and_leaves_no_partial_file() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1, 2, 3], 0);
-    write_sequence(d, "bg", &[1, 2, 3], 100);
+    write_sequence(d, "fg", [1, 2, 3], 0);
+    write_sequence(d, "bg", [1, 2, 3], 100);
     // Truncate frame 2 of the background in the middle of its pixel data.
     let bad = d.join("bg.0002.exr");
     let bytes = std::fs::read(&bad).unwrap();
@@ -174,7 +158,7 @@ fn corrupted_pixel_data_is_an_error_not_a_crash() {
 fn usage_errors_exit_2_and_bad_inputs_exit_3() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1, 2], 0);
+    write_sequence(d, "fg", [1, 2], 0);
     let (fg, single, seq, none) = (
         d.join("fg.####.exr"),
         d.join("single.exr"),
@@ -231,7 +215,7 @@ fn usage_errors_exit_2_and_bad_inputs_exit_3() {
 fn an_unwritable_output_exits_4_naming_it() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1], 0);
+    write_sequence(d, "fg", [1], 0);
     std::fs::write(d.join("blocker"), "a file where a folder should be").unwrap();
     let target = d.join("blocker/c.####.exr");
     let out = run(&[
@@ -250,7 +234,7 @@ fn an_unwritable_output_exits_4_naming_it() {
 fn json_summary_reports_frames_pixels_and_memory() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write_sequence(d, "fg", &[1, 2, 3], 0);
+    write_sequence(d, "fg", [1, 2, 3], 0);
     let out = run(&[
         "over",
         s(&d.join("fg.####.exr")),
@@ -262,7 +246,7 @@ fn json_summary_reports_frames_pixels_and_memory() {
     assert!(out.status.success(), "{}", stderr(&out));
     let summary: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON record");
     assert_eq!(summary["frames"], 3);
-    assert_eq!(summary["pixels"], 3 * 24 * 20);
+    assert_eq!(summary["pixels"], 3 * 48 * 40);
     assert!(summary["peak_rss_bytes"].as_u64().unwrap() > 1 << 20);
     assert!(summary["pixels_per_second"].as_f64().unwrap() > 0.0);
 }

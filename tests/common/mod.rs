@@ -54,6 +54,19 @@ pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
+pub fn s(path: &Path) -> &str {
+    path.to_str().expect("test paths are UTF-8")
+}
+
+/// Frames `NAME.####.exr` of random 48x40 half RGBA, zip, in `dir`.
+pub fn write_sequence(dir: &Path, name: &str, frames: impl IntoIterator<Item = i64>, seed: u64) {
+    for frame in frames {
+        let img = random_rgba(seed + frame as u64, 0, 0, 48, 40, Kind::Half, false);
+        let path = dir.join(format!("{name}.{frame:04}.exr"));
+        write_image(&path, &img, compression("zip"), LineOrder::Increasing);
+    }
+}
+
 pub fn shared_images() -> PathBuf {
     std::env::var_os("EXRCOMP_SHARED_IMAGES")
         .map(PathBuf::from)
