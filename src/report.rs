@@ -105,22 +105,6 @@ impl Report {
             println!("{record}");
             return;
         }
-        if !summary.kept.is_empty() {
-            eprintln!(
-                "{} frames already complete, kept (--resume)",
-                summary.kept.len()
-            );
-        }
-        if !summary.skipped.is_empty() {
-            eprintln!(
-                "{} frames left out for missing input: {:?}",
-                summary.skipped.len(),
-                summary.skipped
-            );
-        }
-        for line in &summary.replaced {
-            eprintln!("{line}");
-        }
         for (frame, reason) in &summary.failed {
             eprintln!("frame {frame} failed: {reason}");
         }
@@ -128,6 +112,22 @@ impl Report {
             eprintln!("interrupted after {} frames", summary.frames);
         }
         if !self.quiet {
+            if !summary.kept.is_empty() {
+                eprintln!(
+                    "{} frames already complete, kept (--resume)",
+                    summary.kept.len()
+                );
+            }
+            if !summary.skipped.is_empty() {
+                eprintln!(
+                    "{} frames left out for missing input: {:?}",
+                    summary.skipped.len(),
+                    summary.skipped
+                );
+            }
+            for line in &summary.replaced {
+                eprintln!("{line}");
+            }
             eprintln!(
                 "{} frames in {:.2} s: {:.2} frames/s, {:.1} Mpixels/s, peak memory {}",
                 summary.frames,

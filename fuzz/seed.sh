@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Copies the seed corpus for the read_exr target from shared/exr-images (beside
+# the repository; override with EXR_IMAGES=dir) into fuzz/corpus/read_exr.
+# The corpus is not committed; only crash reproducers are (tests/fuzz-regressions/).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+images="${EXR_IMAGES:-$here/../../shared/exr-images}"
+out="$here/corpus/read_exr"
+mkdir -p "$out"
+for p in ScanLines DisplayWindow TestImages Beachball/singlepart.0001.exr v2/LowResLeftView Damaged; do
+    # Flattened names (ScanLines_Desk.exr); Damaged/ files have no extension.
+    find "$images/$p" -type f ! -name '*.rst' | while read -r f; do
+        install -m 644 "$f" "$out/$(echo "${f#"$images"/}" | tr / _)"
+    done
+done
+echo "seeded $(ls "$out" | wc -l) files into $out"
