@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# CI smoke test: fuzzes read_exr for ~20 s (FUZZ_SECONDS to change).
+# Exits 0 with a message when cargo-fuzz or a toolchain able to build the target
+# is missing; non-zero only when the fuzzer itself finds a crash, timeout or OOM.
+set -uo pipefail
+cd "$(dirname "$0")"
+seconds="${FUZZ_SECONDS:-20}"
+# cargo-fuzz passes nightly-only flags (-Zsanitizer=address); this lets stable accept them.
+export RUSTC_BOOTSTRAP=1
+
+if ! cargo fuzz --version >/dev/null 2>&1; then
+    if [ -n "${CI:-}" ]; then
+        cargo install cargo-fuzz --locked || { echo "fuzz smoke: SKIPPED (cannot install cargo-fuzz)"; exit 0; }
+    else
+        echo "fuzz smoke: SKIPPED (cargo-fuzz not installed: cargo install cargo-fuzz --locked)"
+        exit 0
+    fi
+fi
+
+if ! cargo fuzz build read_exr; then
+    echo "fuzz smoke: SKIPPED (this toolchain cannot build the fuzz target)"
+    exit 0
+fi
+
+[ -d corpus/read_exr ] || ./seed.sh || mkdir -p corpus/read_exr
+if cargo fuzz run read_exr -- -max_total_time="$seconds" \
+        -rss_limit_mb=2048 -timeout=10 -max_len=4000000; then
+    echo "fuzz smoke: OK (${seconds} s, no crash)"
+else
+    echo "fuzz smoke: FAILED: reproducer in fuzz/artifacts/read_exr/" >&2
+    exit 1
+fi
