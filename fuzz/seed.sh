@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Copies the seed corpus for the read_exr target from shared/exr-images (beside
-# the repository; override with EXR_IMAGES=dir) into fuzz/corpus/read_exr.
+# the repository; override with EXR_IMAGES=dir) into fuzz/corpus/read_exr, or
+# into the directory given as the first argument.
 # The corpus is not committed; only crash reproducers are (tests/fuzz-regressions/).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 images="${EXR_IMAGES:-$here/../../shared/exr-images}"
-out="$here/corpus/read_exr"
+out="${1:-$here/corpus/read_exr}"
 mkdir -p "$out"
 for p in ScanLines DisplayWindow TestImages Beachball/singlepart.0001.exr v2/LowResLeftView Damaged; do
     # Flattened names (ScanLines_Desk.exr); Damaged/ files have no extension.

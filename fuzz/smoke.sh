@@ -22,8 +22,13 @@ if ! cargo fuzz build read_exr; then
     exit 0
 fi
 
-[ -d corpus/read_exr ] || ./seed.sh || mkdir -p corpus/read_exr
-if cargo fuzz run read_exr -- -max_total_time="$seconds" \
+# A fresh corpus of the seeds only: a grown local corpus takes minutes to load.
+corpus="$(mktemp -d)"
+trap 'rm -rf "$corpus"' EXIT
+./seed.sh "$corpus" || echo "fuzz smoke: no seed images, starting from an empty corpus"
+# Small seeds only, so that loading them takes seconds and leaves time to mutate.
+find "$corpus" -type f -size +256k -delete
+if cargo fuzz run read_exr "$corpus" -- -max_total_time="$seconds" \
         -rss_limit_mb=2048 -timeout=10 -max_len=4000000; then
     echo "fuzz smoke: OK (${seconds} s, no crash)"
 else
