@@ -41,10 +41,6 @@ impl InputCursor {
         }
     }
 
-    fn data_window(&self) -> IntegerBounds {
-        self.window
-    }
-
     fn lines_per_chunk(&self) -> usize {
         self.file
             .header(self.part)
@@ -54,7 +50,7 @@ impl InputCursor {
 
     /// Chunk indices holding rows `rows` (absolute), clipped to the data window.
     fn chunks_for(&self, rows: &Range<i32>) -> Range<usize> {
-        let w = self.data_window();
+        let w = self.window;
         let (top, bottom) = (w.position.y(), w.end().y());
         let (start, end) = (rows.start.max(top), rows.end.min(bottom));
         if start >= end {
@@ -98,7 +94,7 @@ pub fn decode_strip(
                 columns.1,
                 (rows.end - rows.start) as usize,
                 header.channels.list.to_vec(),
-                input.data_window(),
+                input.window,
             )
         })
         .collect();
@@ -111,7 +107,7 @@ pub fn decode_strip(
         blocks[i].push((k, block));
     }
     for (i, input) in inputs.iter_mut().enumerate() {
-        let window = input.data_window();
+        let window = input.window;
         for (_, block) in &blocks[i] {
             copy_block(block, window, &mut strips[i], &rows);
         }
