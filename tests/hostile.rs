@@ -134,3 +134,22 @@ fn fuzzer_findings_stay_fixed() {
         check(&entry.unwrap().path(), false);
     }
 }
+
+#[test]
+fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
+    let dir = tempfile::tempdir().unwrap();
+    let bytes = std::fs::read(shared_images().join("ScanLines/Desk.exr")).unwrap();
+    let first = first_chunk_offset(&bytes);
+    let mut damaged = bytes.clone();
+    // Scanline chunk: y (i32), then the data size (i32).
+    damaged[first + 4..first + 8].copy_from_slice(&i32::MAX.to_le_bytes());
+    let path = dir.path().join("huge-chunk.exr");
+    std::fs::write(&path, &damaged).unwrap();
+    let out = limited(&["info", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        stderr(&out).contains("declares 2147483647 bytes"),
+        "{}",
+        stderr(&out)
+    );
+}

@@ -113,6 +113,11 @@ impl ExrFile {
     /// Reads chunk `index` of `part` (table order) without decompressing it.
     pub fn read_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
         let offset = self.offsets[part][index] as usize;
+        self.check_chunk_sizes(part, offset).map_err(|m| {
+            self.error(format!(
+                "chunk {index} at byte {offset} is truncated or damaged: {m}"
+            ))
+        })?;
         let mut bytes = &self.mmap[offset..];
         let chunk = catch_panic(|| Chunk::read(&mut bytes, &self.meta))
             .map_err(|p| {
@@ -147,6 +152,44 @@ impl ExrFile {
             }
         }
         Ok(chunk)
+    }
+
+    /// Checks the data sizes a chunk declares against the bytes left in the
+    /// file, before anything sized from them is allocated.
+    fn check_chunk_sizes(&self, part: usize, offset: usize) -> std::result::Result<(), String> {
+        let header = self.header(part);
+        let mut at = offset + if self.meta.headers.len() > 1 { 4 } else { 0 };
+        at += if header.blocks.has_tiles() { 16 } else { 4 };
+        let field = |at: usize, len: usize| -> std::result::Result<u64, String> {
+            let bytes = self
+                .mmap
+                .get(at..at + len)
+                .ok_or("the chunk header is cut off")?;
+            Ok(match len {
+                4 => i32::from_le_bytes(bytes.try_into().expect("4 bytes")).max(-1) as i64 as u64,
+                _ => u64::from_le_bytes(bytes.try_into().expect("8 bytes")),
+            })
+        };
+        let (data_start, declared) = if header.deep {
+            // Packed offset table and packed samples follow three u64 sizes.
+            let total = field(at, 8)?
+                .checked_add(field(at + 8, 8)?)
+                .ok_or("sizes overflow")?;
+            (at + 24, total)
+        } else {
+            let size = field(at, 4)?;
+            if size == u64::MAX {
+                return Err("negative data size".into());
+            }
+            (at + 4, size)
+        };
+        let left = self.mmap.len().saturating_sub(data_start) as u64;
+        if declared > left {
+            return Err(format!(
+                "it declares {declared} bytes but the file has {left} left"
+            ));
+        }
+        Ok(())
     }
 
     /// Reads and decompresses chunk `index` of `part`.
