@@ -54,20 +54,18 @@ fn sources() -> Vec<(String, Vec<u8>)> {
     .collect()
 }
 
-/// Where the pixel chunks begin: the smallest offset in the table that
-/// follows the header (single-part files: read the first table entry).
-fn first_chunk_offset(bytes: &[u8]) -> usize {
+/// Where the offset table starts and where it ends (the first chunk
+/// begins there, in files whose chunks follow the table in order).
+fn offset_table(bytes: &[u8]) -> (usize, usize) {
     let meta = exr::meta::MetaData::read_from_buffered(bytes, false).unwrap();
     let count = meta.headers[0].chunk_count;
-    // The table ends where the first chunk starts, 8 bytes per entry.
-    (0..bytes.len() - 8)
-        .find(|&start| {
-            let entry = |i: usize| {
-                u64::from_le_bytes(bytes[start + 8 * i..start + 8 * i + 8].try_into().unwrap())
-            };
-            start + 8 * count <= bytes.len() && entry(0) as usize == start + 8 * count
-        })
-        .unwrap()
+    let entry =
+        |start: usize| u64::from_le_bytes(bytes[start..start + 8].try_into().unwrap()) as usize;
+    // The first entry points just past the table.
+    let start = (0..bytes.len() - 8 * count)
+        .find(|&start| entry(start) == start + 8 * count)
+        .unwrap();
+    (start, start + 8 * count)
 }
 
 #[test]
@@ -76,9 +74,20 @@ fn truncations_at_many_offsets_are_refused() {
     for (name, bytes) in sources() {
         let path = dir.path().join(&name);
         let len = bytes.len();
-        let table = first_chunk_offset(&bytes);
+        let (table, chunks) = offset_table(&bytes);
         let mut offsets: Vec<usize> = (1..24).map(|i| len * i / 24).collect();
-        offsets.extend([0, 4, 8, table - 8, table - 1, table, table + 5, len - 1]);
+        offsets.extend([
+            0,
+            4,
+            8,
+            table - 1,
+            table,
+            table + 5,
+            chunks - 1,
+            chunks,
+            chunks + 5,
+            len - 1,
+        ]);
         for cut in offsets {
             std::fs::write(&path, &bytes[..cut]).unwrap();
             check(&path, true);
@@ -92,7 +101,7 @@ fn changed_header_and_offset_table_bytes_never_crash() {
     let mut rng = Lcg(2024);
     for (name, bytes) in sources() {
         let path = dir.path().join(&name);
-        let table_end = first_chunk_offset(&bytes);
+        let (_, table_end) = offset_table(&bytes);
         for _ in 0..40 {
             let mut damaged = bytes.clone();
             let at = (rng.next() * table_end as f32) as usize;
@@ -139,7 +148,7 @@ fn fuzzer_findings_stay_fixed() {
 fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
     let dir = tempfile::tempdir().unwrap();
     let bytes = std::fs::read(shared_images().join("ScanLines/Desk.exr")).unwrap();
-    let first = first_chunk_offset(&bytes);
+    let (_, first) = offset_table(&bytes);
     let mut damaged = bytes.clone();
     // Scanline chunk: y (i32), then the data size (i32).
     damaged[first + 4..first + 8].copy_from_slice(&i32::MAX.to_le_bytes());
