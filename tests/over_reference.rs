@@ -5,38 +5,32 @@ use common::*;
 use exr::prelude::LineOrder;
 use std::path::Path;
 
+/// How the inputs are written: compression of fg and of bg, line order.
+struct Inputs<'a>(&'a str, &'a str, LineOrder);
+
 /// Composites fg over bg with exrcomp and with the reference; returns both.
-fn composite(dir: &Path, fg: &Img, bg: &Img, input_compression: &str, args: &[&str]) -> (Img, Img) {
+/// The output is `dir/out.exr`, and OpenEXR must read it too.
+fn composite_inputs(dir: &Path, fg: &Img, bg: &Img, inputs: Inputs, args: &[&str]) -> (Img, Img) {
     let (fg_path, bg_path, out_path) =
         (dir.join("fg.exr"), dir.join("bg.exr"), dir.join("out.exr"));
-    write_image(
-        &fg_path,
-        fg,
-        compression(input_compression),
-        LineOrder::Increasing,
-    );
-    write_image(
-        &bg_path,
-        bg,
-        compression(input_compression),
-        LineOrder::Increasing,
-    );
-    let mut command = vec![
-        "over",
-        fg_path.to_str().unwrap(),
-        bg_path.to_str().unwrap(),
-        "-o",
-        out_path.to_str().unwrap(),
-        "-q",
-    ];
+    write_image(&fg_path, fg, compression(inputs.0), inputs.2);
+    write_image(&bg_path, bg, compression(inputs.1), inputs.2);
+    let mut command = vec!["over", s(&fg_path), s(&bg_path), "-o", s(&out_path), "-q"];
     command.extend_from_slice(args);
     let out = run(&command);
     assert!(out.status.success(), "exrcomp failed: {}", stderr(&out));
+    assert_peers_read(&out_path);
     let straight = args.contains(&"--straight");
     (
         read_image(&out_path),
         reference_over(&read_image(&fg_path), &read_image(&bg_path), straight),
     )
+}
+
+/// Both inputs in `input_compression`, increasing line order.
+fn composite(dir: &Path, fg: &Img, bg: &Img, input_compression: &str, args: &[&str]) -> (Img, Img) {
+    let inputs = Inputs(input_compression, input_compression, LineOrder::Increasing);
+    composite_inputs(dir, fg, bg, inputs, args)
 }
 
 #[test]
@@ -129,22 +123,9 @@ fn decreasing_line_order_inputs_read_right() {
     let dir = tempfile::tempdir().unwrap();
     let fg = random_rgba(11, 0, 0, 40, 70, Kind::Half, false);
     let bg = random_rgba(12, 0, 0, 40, 70, Kind::Half, false);
-    let (fg_path, bg_path, out) = (
-        dir.path().join("f.exr"),
-        dir.path().join("b.exr"),
-        dir.path().join("o.exr"),
-    );
-    write_image(&fg_path, &fg, compression("zip"), LineOrder::Decreasing);
-    write_image(&bg_path, &bg, compression("piz"), LineOrder::Decreasing);
-    let result = run(&[
-        "over",
-        fg_path.to_str().unwrap(),
-        bg_path.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(result.status.success(), "{}", stderr(&result));
-    assert_identical(&read_image(&out), &reference_over(&fg, &bg, false));
+    let inputs = Inputs("zip", "piz", LineOrder::Decreasing);
+    let (ours, reference) = composite_inputs(dir.path(), &fg, &bg, inputs, &[]);
+    assert_identical(&ours, &reference);
 }
 
 #[test]
@@ -153,21 +134,9 @@ fn background_attributes_and_display_window_are_kept() {
     let fg = random_rgba(13, -8, -8, 20, 20, Kind::Half, false);
     let mut bg = random_rgba(14, 0, 0, 30, 20, Kind::Half, false);
     bg.display = (30, 20);
-    let (fg_path, bg_path, out) = (
-        dir.path().join("f.exr"),
-        dir.path().join("b.exr"),
-        dir.path().join("o.exr"),
-    );
-    write_image(&fg_path, &fg, compression("rle"), LineOrder::Increasing);
-    write_image(&bg_path, &bg, compression("piz"), LineOrder::Increasing);
-    let result = run(&[
-        "over",
-        fg_path.to_str().unwrap(),
-        bg_path.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(result.status.success(), "{}", stderr(&result));
+    let inputs = Inputs("rle", "piz", LineOrder::Increasing);
+    composite_inputs(dir.path(), &fg, &bg, inputs, &[]);
+    let out = dir.path().join("out.exr");
     let meta = exr::meta::MetaData::read_from_file(&out, false).unwrap();
     let header = &meta.headers[0];
     assert_eq!(
