@@ -10,10 +10,12 @@ use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
+use crate::io::writer::remove_stale_temporaries;
 use crate::ops::over::Over;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
-use std::path::Path;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 pub fn run(command: Command) -> Result<()> {
@@ -228,6 +230,12 @@ fn run_with_progress(
     run: &RunArgs,
     summary: Summary,
 ) -> Result<(Report, Summary)> {
+    let folders: BTreeSet<PathBuf> = job
+        .frames
+        .iter()
+        .filter_map(|f| job.output.path(f.frame).parent().map(Path::to_path_buf))
+        .collect();
+    folders.iter().for_each(|dir| remove_stale_temporaries(dir));
     let report = Report::new(label, job.frames.len(), run.quiet, run.json);
     let events = Progress {
         report: &report,

@@ -231,6 +231,11 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
         }
         assert_outputs_complete(&d.join("o"));
     }
+    // A temporary file a killed run left behind, and one of a live process.
+    let stale = d.join("o/.t.0001.exr.exrcomp-4194305.tmp");
+    let live = d.join(format!("o/.t.0002.exr.exrcomp-{}.tmp", std::process::id()));
+    std::fs::write(&stale, "left by a killed run").unwrap();
+    std::fs::write(&live, "being written by a live process").unwrap();
     let resumed = run(&[
         "transcode",
         s(&d.join("in.####.exr")),
@@ -242,6 +247,10 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
         "--resume",
     ]);
     assert!(resumed.status.success(), "{}", stderr(&resumed));
+    assert!(
+        !stale.exists() && live.exists(),
+        "stale temporaries go, live ones stay"
+    );
     for frame in 1..=30 {
         let a = std::fs::read(frame_path(&d.join("o"), "t", frame)).unwrap();
         let b = std::fs::read(frame_path(&d.join("ref"), "t", frame)).unwrap();

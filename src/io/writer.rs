@@ -19,6 +19,33 @@ pub fn temporary_path(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.exrcomp-{}.tmp", std::process::id()))
 }
 
+/// Removes temporary files in `dir` left by exrcomp runs that no longer exist
+/// (killed with SIGKILL, or a machine that lost power). A file of a process
+/// that is still running, another exrcomp writing there, is left alone.
+pub fn remove_stale_temporaries(dir: &Path) {
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let pid = name
+            .strip_prefix('.')
+            .and_then(|n| n.strip_suffix(".tmp"))
+            .and_then(|n| n.rsplit_once(".exrcomp-"))
+            .and_then(|(_, pid)| pid.parse::<u32>().ok());
+        if let Some(pid) = pid {
+            if !Path::new(&format!("/proc/{pid}")).exists() {
+                let _ = fs::remove_file(entry.path());
+            }
+        }
+    }
+}
+
 /// Writes `header` and then the chunks `next` yields (`Ok(None)` ends the
 /// file). An error from `next` abandons the file and is returned as is.
 pub fn write_file(
