@@ -31,18 +31,6 @@ impl Samples {
         }
     }
 
-    pub fn len(&self) -> usize {
-        match self {
-            Samples::F16(v) => v.len(),
-            Samples::F32(v) => v.len(),
-            Samples::U32(v) => v.len(),
-        }
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
     /// Converts `range` to f32 into `out`.
     pub fn read_f32(&self, range: Range<usize>, out: &mut [f32]) {
         match self {
