@@ -1,6 +1,7 @@
 //! Files: frame sequences, the EXR reader and writer.
 
 pub mod deep;
+pub mod deflate;
 pub mod reader;
 pub mod sequence;
 pub mod writer;

@@ -1,24 +1,23 @@
-//! EXR's ZIP/ZIPS pixel transform over libdeflate: the file format of the
-//! exr crate's codec, at several times its compression speed.
+//! EXR's ZIP/ZIPS pixel transform over zlib (`deflate.rs`): the file format
+//! of the exr crate's codec, at several times its compression speed.
 //!
 //! Encoding: split the bytes into even- and odd-indexed halves, replace each
 //! byte by its difference to the previous one (+128), then zlib-deflate.
 
-use libdeflater::{CompressionLvl, Compressor, Decompressor};
+use super::deflate;
+use libdeflater::Decompressor;
 use std::cell::RefCell;
 
 #[cfg(target_endian = "big")]
 compile_error!("the codecs here take native-endian samples to be little-endian");
 
-/// libdeflate level 2. Measured against OpenEXR 3.5 (oiiotool 3.2, which
-/// writes what our level 4 writes): grainy 4K plates +0.5%, the ScanLines and
-/// Beachball photographs +0.3% to +2.4%, for 6% less time than level 4;
-/// level 1 would save 13% more but makes photographs 5.6% larger.
+/// libdeflate level 2 (for what ISA-L does not take, `deflate.rs`). Measured
+/// against OpenEXR 3.5 (oiiotool 3.2, which writes what libdeflate level 4
+/// writes): grainy 4K plates +0.6%, the ScanLines and Beachball photographs
+/// -2.3% to +1.7%.
 pub const DEFAULT_LEVEL: u8 = 2;
 
 thread_local! {
-    /// This thread's compressor and the level it was made for.
-    static COMPRESSOR: RefCell<Option<(u8, Compressor)>> = const { RefCell::new(None) };
     /// Per-thread buffers for the transformed bytes and the deflate output:
     /// reused, so blocks cost no fresh zeroed pages.
     static SCRATCH: RefCell<(Vec<u8>, Vec<u8>)> = const { RefCell::new((Vec::new(), Vec::new())) };
@@ -40,18 +39,8 @@ pub fn compress(raw: &[u8], level: u8) -> Option<Vec<u8>> {
         let (transformed, out) = &mut *buffers.borrow_mut();
         let transformed = scratch(transformed, raw.len());
         transform(raw, transformed);
-        COMPRESSOR.with(|c| {
-            let mut c = c.borrow_mut();
-            if c.as_ref().is_none_or(|(l, _)| *l != level) {
-                let lvl =
-                    CompressionLvl::new(level.into()).expect("level checked by the command line");
-                *c = Some((level, Compressor::new(lvl)));
-            }
-            let (_, c) = c.as_mut().expect("just made");
-            let out = scratch(out, c.zlib_compress_bound(raw.len()));
-            let size = c.zlib_compress(transformed, out).ok()?;
-            (size < raw.len()).then(|| out[..size].to_vec())
-        })
+        deflate::zlib_compress(transformed, level, out);
+        (out.len() < raw.len()).then(|| out.clone())
     })
 }
 
@@ -341,7 +330,7 @@ mod tests {
         for i in (1..t.len()).rev() {
             t[i] = t[i].wrapping_sub(t[i - 1]).wrapping_add(128);
         }
-        let mut c = Compressor::new(CompressionLvl::new(9).unwrap());
+        let mut c = libdeflater::Compressor::new(libdeflater::CompressionLvl::new(9).unwrap());
         let mut out = vec![0; c.zlib_compress_bound(t.len())];
         let n = c.zlib_compress(&t, &mut out).unwrap();
         out.truncate(n);
