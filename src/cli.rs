@@ -21,16 +21,75 @@ pub struct Cli {
 pub enum Command {
     /// Composite FG over BG: C = Cfg + (1 - Afg) Cbg (premultiplied).
     Over {
-        /// Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr).
+        /// Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr), with
+        /// `:PART` (name or index) to read one part of a multi-part file.
         fg: String,
         /// Background: its header, display window and other channels are kept.
         bg: String,
         /// Output file or sequence.
         #[arg(short, long)]
         output: String,
-        /// Inputs are unpremultiplied (straight) colour.
+        /// Inputs and output are unpremultiplied (straight) colour.
         #[arg(long)]
         straight: bool,
+        #[command(flatten)]
+        layers: LayerArgs,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Merge A (top) with B (bottom) by an operator, as Nuke's Merge does.
+    Merge {
+        #[arg(long, value_enum)]
+        op: crate::ops::merge::MergeOp,
+        /// Top input: a file or sequence, `:PART` for a part.
+        a: String,
+        /// Bottom input: its header, display window and other channels are kept.
+        b: String,
+        #[arg(short, long)]
+        output: String,
+        /// Inputs and output are unpremultiplied (straight) colour.
+        #[arg(long)]
+        straight: bool,
+        /// Blend the result with B: 0 gives B, 1 the result.
+        #[arg(long, default_value_t = 1.0, value_parser = parse_mix)]
+        mix: f32,
+        #[command(flatten)]
+        layers: LayerArgs,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Composite layers L1 over L2 over ... Ln in one pass (L1 on top).
+    Stack {
+        /// Two or more inputs, top first; the last one's header is kept.
+        #[arg(required = true, num_args = 2..)]
+        inputs: Vec<String>,
+        #[arg(short, long)]
+        output: String,
+        /// Inputs and output are unpremultiplied (straight) colour.
+        #[arg(long)]
+        straight: bool,
+        #[command(flatten)]
+        layers: LayerArgs,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Multiply colour by alpha.
+    Premult {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        layers: LayerArgs,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Divide colour by alpha (colour unchanged where alpha is 0).
+    Unpremult {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        layers: LayerArgs,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -83,6 +142,25 @@ pub enum Command {
     },
 }
 
+/// Which layers, views and parts an operation works on.
+#[derive(Args, Clone, Default)]
+pub struct LayerArgs {
+    /// Layer to work on (`diffuse` for diffuse.R, G, B, A); repeatable.
+    /// Default: the unnamed layer (R, G, B, A).
+    #[arg(long = "layer")]
+    pub layers: Vec<String>,
+    /// Every layer with colour channels in all inputs.
+    #[arg(long, conflicts_with_all = ["layers", "view"])]
+    pub all_layers: bool,
+    /// View of a stereo file: the part with this `view`, or in a single-part
+    /// multi-view file the channels `VIEW.R` (`layer.VIEW.R`).
+    #[arg(long)]
+    pub view: Option<String>,
+    /// Part (name or index) of inputs given without `:PART`.
+    #[arg(long)]
+    pub part: Option<String>,
+}
+
 /// Options every job that writes files takes.
 #[derive(Args, Clone)]
 pub struct RunArgs {
@@ -119,6 +197,15 @@ pub struct RunArgs {
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
     pub strip_rows: Option<usize>,
+}
+
+fn parse_mix(text: &str) -> Result<f32, String> {
+    let mix: f32 = text.parse().map_err(|_| "expected a number")?;
+    if (0.0..=1.0).contains(&mix) {
+        Ok(mix)
+    } else {
+        Err("must be from 0 to 1".into())
+    }
 }
 
 fn parse_origin(text: &str) -> Result<(i32, i32), String> {

@@ -1,7 +1,7 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, RunArgs};
-use crate::engine::graph::{Graph, Node, Op};
+use crate::cli::{Command, LayerArgs, RunArgs};
+use crate::engine::graph::{Graph, Op};
 use crate::engine::interrupt;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
@@ -11,7 +11,10 @@ use crate::error::{Error, Kind, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
-use crate::ops::over::Over;
+use crate::io::parts::split_part;
+use crate::ops::layers::Selection;
+use crate::ops::merge::{Merge, MergeOp};
+use crate::ops::premult::Premult;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -25,28 +28,65 @@ pub fn run(command: Command) -> Result<()> {
             bg,
             output,
             straight,
+            layers,
             run,
         } => {
-            let inputs = vec![FramePattern::parse(&fg), FramePattern::parse(&bg)];
-            let graph = Graph {
-                nodes: vec![
-                    Node::Input(0),
-                    Node::Input(1),
-                    Node::Op {
-                        op: Box::new(Over { straight }),
-                        inputs: vec![0, 1],
-                    },
-                ],
-            };
-            let (job, summary) = input_job(inputs, &output, graph, 1, &run)?;
+            let merge = merge_op(MergeOp::Over, straight, 1.0, &layers);
+            let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
+            let (job, summary) = input_job(&[fg, bg], &output, graph, 1, &layers, &run)?;
             run_job(&job, "over", &run, summary)
         }
+        Command::Merge {
+            op,
+            a,
+            b,
+            output,
+            straight,
+            mix,
+            layers,
+            run,
+        } => {
+            let merge = merge_op(op, straight, mix, &layers);
+            let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
+            let (job, summary) = input_job(&[a, b], &output, graph, 1, &layers, &run)?;
+            run_job(&job, "merge", &run, summary)
+        }
+        Command::Stack {
+            inputs,
+            output,
+            straight,
+            layers,
+            run,
+        } => {
+            // Bottom up: L(n-1) over L(n), then L(n-2) over that, ... L1 on top.
+            let n = inputs.len();
+            let ops = (0..n - 1)
+                .rev()
+                .map(|i| {
+                    let below = if i == n - 2 { n - 1 } else { n + (n - 2 - (i + 1)) };
+                    (merge_op(MergeOp::Over, straight, 1.0, &layers), vec![i, below])
+                })
+                .collect();
+            let graph = Graph::chain(n, ops);
+            let (job, summary) = input_job(&inputs, &output, graph, n - 1, &layers, &run)?;
+            run_job(&job, "stack", &run, summary)
+        }
+        Command::Premult {
+            input,
+            output,
+            layers,
+            run,
+        } => premult(false, input, &output, &layers, &run),
+        Command::Unpremult {
+            input,
+            output,
+            layers,
+            run,
+        } => premult(true, input, &output, &layers, &run),
         Command::Transcode { input, output, run } => {
-            let graph = Graph {
-                nodes: vec![Node::Input(0)],
-            };
+            let graph = Graph::chain(1, Vec::new());
             let (job, summary) =
-                input_job(vec![FramePattern::parse(&input)], &output, graph, 0, &run)?;
+                input_job(&[input], &output, graph, 0, &LayerArgs::default(), &run)?;
             run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files } => info(&files),
@@ -85,14 +125,60 @@ pub fn run(command: Command) -> Result<()> {
     }
 }
 
-/// A job over input sequences; the header comes from input `header_from`.
+fn selection(layers: &LayerArgs) -> Selection {
+    Selection {
+        layers: layers.layers.clone(),
+        all: layers.all_layers,
+        view: layers.view.clone(),
+    }
+}
+
+fn merge_op(op: MergeOp, straight: bool, mix: f32, layers: &LayerArgs) -> Box<dyn Op> {
+    Box::new(Merge {
+        op,
+        straight,
+        mix,
+        layers: selection(layers),
+    })
+}
+
+fn premult(
+    inverse: bool,
+    input: String,
+    output: &str,
+    layers: &LayerArgs,
+    run: &RunArgs,
+) -> Result<()> {
+    let op: Box<dyn Op> = Box::new(Premult {
+        inverse,
+        layers: selection(layers),
+    });
+    let graph = Graph::chain(1, vec![(op, vec![0])]);
+    let (job, summary) = input_job(&[input], output, graph, 0, layers, run)?;
+    let name = if inverse { "unpremult" } else { "premult" };
+    run_job(&job, name, run, summary)
+}
+
+/// A job over input sequences (`file.exr:PART` picks a part); the header
+/// comes from input `header_from`.
 fn input_job(
-    inputs: Vec<FramePattern>,
+    texts: &[String],
     output: &str,
     graph: Graph,
     header_from: usize,
+    layers: &LayerArgs,
     run: &RunArgs,
 ) -> Result<(Job, Summary)> {
+    let (inputs, parts): (Vec<FramePattern>, Vec<Option<String>>) = texts
+        .iter()
+        .map(|text| {
+            let (path, part) = split_part(text);
+            (
+                FramePattern::parse(path),
+                part.map(str::to_string).or_else(|| layers.part.clone()),
+            )
+        })
+        .unzip();
     let output = FramePattern::parse(output);
     let frames = match &run.frames {
         Some(text) => parse_frame_list(text)?,
@@ -120,6 +206,8 @@ fn input_job(
     let resolved = resolve(&inputs, &frames, run.missing)?;
     let job = Job {
         inputs,
+        parts,
+        view: layers.view.clone(),
         output,
         frames: resolved.frames,
         graph,
@@ -153,6 +241,8 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
     let display = plate.display_window();
     Ok(Job {
         inputs: Vec::new(),
+        parts: Vec::new(),
+        view: None,
         output,
         frames: frames
             .into_iter()
@@ -161,12 +251,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
                 inputs: Vec::new(),
             })
             .collect(),
-        graph: Graph {
-            nodes: vec![Node::Op {
-                op: Box::new(plate) as Box<dyn Op>,
-                inputs: Vec::new(),
-            }],
-        },
+        graph: Graph::chain(0, vec![(Box::new(plate) as Box<dyn Op>, Vec::new())]),
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
         strip_rows: run.strip_rows,
@@ -370,6 +455,7 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         bg: pattern("bg"),
         output: pattern("comp"),
         straight: false,
+        layers: LayerArgs::default(),
         run: RunArgs {
             frames: Some(format!("{first}-{}", first + length as i64 - 1)),
             ..run.clone()

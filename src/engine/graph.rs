@@ -14,6 +14,12 @@ pub trait Op: Send + Sync {
     /// The output's channels, given each input's channels.
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription>;
 
+    /// Whether the inputs have what the op needs (a layer asked for, say):
+    /// the reason when not.
+    fn check(&self, _inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        Ok(())
+    }
+
     /// The output's data window, given each input's.
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         inputs
@@ -44,6 +50,14 @@ pub struct Graph {
 }
 
 impl Graph {
+    /// `inputs` input nodes (0..inputs), then `ops` in order, each with the
+    /// nodes it reads; the last one is written (the last input without ops).
+    pub fn chain(inputs: usize, ops: Vec<(Box<dyn Op>, Vec<usize>)>) -> Self {
+        let mut nodes: Vec<Node> = (0..inputs).map(Node::Input).collect();
+        nodes.extend(ops.into_iter().map(|(op, inputs)| Node::Op { op, inputs }));
+        Graph { nodes }
+    }
+
     pub fn input_count(&self) -> usize {
         self.nodes
             .iter()
@@ -96,5 +110,18 @@ pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
     let y0 = a.position.y().min(b.position.y());
     let x1 = a.end().x().max(b.end().x());
     let y1 = a.end().y().max(b.end().y());
+    IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+}
+
+/// The window both cover; empty (zero size at the origin) when they do not
+/// meet.
+pub fn intersection(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
+    let x0 = a.position.x().max(b.position.x());
+    let y0 = a.position.y().max(b.position.y());
+    let x1 = a.end().x().min(b.end().x());
+    let y1 = a.end().y().min(b.end().y());
+    if a.size.area() == 0 || b.size.area() == 0 || x1 <= x0 || y1 <= y0 {
+        return IntegerBounds::zero();
+    }
     IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
 }

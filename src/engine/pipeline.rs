@@ -119,7 +119,7 @@ fn decode_frame(
         .inputs
         .iter()
         .enumerate()
-        .map(|(i, file)| InputCursor::new(file.clone(), 0, plan.windows[i]))
+        .map(|(i, file)| InputCursor::new(file.clone(), plan.parts[i], plan.windows[i]))
         .collect();
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());

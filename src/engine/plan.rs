@@ -1,8 +1,9 @@
 //! What one frame of a job needs: its open inputs, each node's channels and
 //! data window, the output header, and the strip height.
 
-use super::graph::Graph;
+use super::graph::{Graph, Node};
 use crate::error::{Error, Kind, Result};
+use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
 use crate::io::sequence::FramePattern;
 use exr::meta::attribute::Text;
@@ -20,6 +21,10 @@ const STRIP_BYTES: usize = 1 << 20;
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
     pub inputs: Vec<FramePattern>,
+    /// Per input, the part asked for (`file.exr:PART` or `--part`).
+    pub parts: Vec<Option<String>>,
+    /// The view asked for: picks the part of that view in multi-part files.
+    pub view: Option<String>,
     pub output: FramePattern,
     /// Per output frame, where each input comes from.
     pub frames: Vec<FrameSources>,
@@ -82,6 +87,8 @@ pub struct FramePlan {
     pub label: Option<i64>,
     pub output: PathBuf,
     pub inputs: Vec<Arc<ExrFile>>,
+    /// Per input, the part read.
+    pub parts: Vec<usize>,
     pub header: Header,
     /// Per node: channels and data window.
     pub channels: Vec<Vec<ChannelDescription>>,
@@ -112,42 +119,57 @@ impl FramePlan {
 pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let frame = sources.frame;
     let label = job.frame_label(frame);
+    let mut parts = Vec::new();
     let inputs: Vec<Arc<ExrFile>> = job
         .inputs
         .iter()
         .zip(&sources.inputs)
-        .map(|(pattern, source)| {
+        .enumerate()
+        .map(|(i, (pattern, source))| {
             let at = source.file_frame();
             let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
-            check_readable(&file)?;
+            let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?;
+            check_readable(&file, part)?;
+            parts.push(part);
             Ok(Arc::new(file))
         })
         .collect::<Result<_>>()?;
+    let header_of = |i: usize| inputs[i].header(parts[i]);
     // A black input has no data anywhere: an empty data window.
     let input_window = |i: usize| match sources.inputs[i] {
-        Source::Frame(_) => inputs[i].header(0).data_window(),
+        Source::Frame(_) => header_of(i).data_window(),
         Source::Black(_) => IntegerBounds::zero(),
     };
 
     let graph: &Graph = &job.graph;
     let channels = graph.evaluate(
-        |i| inputs[i].header(0).channels.list.to_vec(),
+        |i| header_of(i).channels.list.to_vec(),
         |op, args| {
             let lists: Vec<&[ChannelDescription]> = args.iter().map(Vec::as_slice).collect();
             op.channels(&lists)
         },
     );
+    for node in &graph.nodes {
+        if let Node::Op { op, inputs: args } = node {
+            let lists: Vec<&[ChannelDescription]> =
+                args.iter().map(|&n| channels[n].as_slice()).collect();
+            op.check(&lists).map_err(|m| {
+                let files: Vec<String> = inputs.iter().map(|f| f.path.display().to_string()).collect();
+                Error::new(Kind::Input, format!("frame {frame} ({}): {m}", files.join(", ")))
+            })?;
+        }
+    }
     let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
     let window = windows[graph.output()];
     if window.size.area() == 0 {
         return Err(Error::new(
             Kind::Input,
-            format!("frame {frame}: every input is black: nothing to write"),
+            format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
         ));
     }
 
     let mut header = match job.header_base {
-        HeaderBase::Input(i) => inputs[i].header(0).clone(),
+        HeaderBase::Input(i) => header_of(i).clone(),
         HeaderBase::New(display) => {
             Header::new(Text::from("image"), display.size, Default::default())
                 .with_display_window(display)
@@ -157,6 +179,8 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let mut output_channels = channels[graph.output()].clone();
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
+    header.own_attributes.software_name =
+        Some(Text::from(concat!("exrcomp ", env!("CARGO_PKG_VERSION"))));
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
@@ -179,6 +203,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         label,
         output: job.output.path(frame),
         inputs,
+        parts,
         header,
         channels,
         windows,
@@ -186,9 +211,9 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     })
 }
 
-/// What the engine reads today: the first part, flat scanlines, no subsampling.
-fn check_readable(file: &ExrFile) -> Result<()> {
-    let header = file.header(0);
+/// What the engine reads today: flat scanlines, no subsampling.
+fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
+    let header = file.header(part);
     if header.deep {
         return Err(file.error("deep data cannot be composited (flatten it first)"));
     }

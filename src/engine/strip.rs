@@ -150,21 +150,34 @@ impl Rows {
         start..start + self.width
     }
 
-    /// Alpha of absolute row `y` as f32: the A channel, or, without one,
+    /// The alpha of an image without an alpha channel, for absolute row `y`:
     /// 1 inside the valid window and 0 outside it.
-    pub fn alpha_f32(&self, y: i32, out: &mut [f32]) {
-        match self.channel_index("A") {
-            Some(a) => self.planes[a].read_f32(self.row_range(y), out),
-            None => {
-                let v = self.valid;
-                let inside_row = y >= v.position.y() && y < v.end().y();
-                for (i, o) in out.iter_mut().enumerate() {
-                    let x = self.x + i as i32;
-                    let inside = inside_row && x >= v.position.x() && x < v.end().x();
-                    *o = if inside { 1.0 } else { 0.0 };
-                }
-            }
+    pub fn implicit_alpha(&self, y: i32, out: &mut [f32]) {
+        let v = self.valid;
+        let inside_row = y >= v.position.y() && y < v.end().y();
+        for (i, o) in out.iter_mut().enumerate() {
+            let x = self.x + i as i32;
+            let inside = inside_row && x >= v.position.x() && x < v.end().x();
+            *o = if inside { 1.0 } else { 0.0 };
         }
+    }
+
+    /// The columns of the valid window, as sample offsets within a row.
+    pub fn valid_columns(&self) -> Range<usize> {
+        let start = (self.valid.position.x() - self.x).clamp(0, self.width as i32) as usize;
+        let end = (self.valid.end().x() - self.x).clamp(0, self.width as i32) as usize;
+        start..end.max(start)
+    }
+
+    /// The rows held that are inside the valid window (absolute).
+    pub fn valid_rows(&self) -> Range<i32> {
+        let start = self.y.max(self.valid.position.y());
+        start..self.end().min(self.valid.end().y()).max(start)
+    }
+
+    /// Whether absolute row `y` is inside the valid window.
+    pub fn valid_row(&self, y: i32) -> bool {
+        y >= self.valid.position.y() && y < self.valid.end().y()
     }
 
     /// Appends the rows of `below`, which must start at `self.end()` and have

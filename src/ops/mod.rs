@@ -1,3 +1,5 @@
 //! Compositing operations, one family per file, as pure functions over strips.
 
-pub mod over;
+pub mod layers;
+pub mod merge;
+pub mod premult;

@@ -1,0 +1,144 @@
+//! Which channels an operation composites: layers (`diffuse.R`), views
+//! (`left.R`) and their alphas. See specs/ops.md, "Layers and views".
+
+use crate::engine::strip::Rows;
+use exr::meta::attribute::ChannelDescription;
+
+/// The colour channels of a layer; its other channels (Z, u, v, mask...)
+/// pass through.
+pub const COLOUR: [&str; 3] = ["R", "G", "B"];
+
+/// The layers an operation works on, as the command line gives them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Selection {
+    /// Layer names; empty means the unnamed layer (plain R, G, B, A).
+    pub layers: Vec<String>,
+    /// Every layer both inputs have (`--all-layers`).
+    pub all: bool,
+    /// A view of a multi-view file (`left`): its channels `left.R` or
+    /// `layer.left.R` where the file has them, else the default view's.
+    pub view: Option<String>,
+}
+
+/// One selected layer, resolved against the channels at hand.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layer {
+    /// Prefix of its channel names: "", "diffuse.", "left." or "diffuse.left.".
+    pub prefix: String,
+    /// Where its alpha is read, first found first: its own `A`, the view's,
+    /// the unnamed `A`; with none of them, alpha is 1 inside the data window.
+    pub alphas: Vec<String>,
+}
+
+impl Layer {
+    pub fn colours(&self) -> impl Iterator<Item = String> + '_ {
+        COLOUR.iter().map(|c| format!("{}{c}", self.prefix))
+    }
+
+    pub fn alpha_channel(&self) -> String {
+        format!("{}A", self.prefix)
+    }
+
+    /// Alpha of absolute row `y` of `rows` as f32 (see `alphas`).
+    pub fn read_alpha(&self, rows: &Rows, y: i32, out: &mut [f32]) {
+        match self.alphas.iter().find_map(|n| rows.channel_index(n)) {
+            Some(a) => rows.planes[a].read_f32(rows.row_range(y), out),
+            None => rows.implicit_alpha(y, out),
+        }
+    }
+}
+
+fn has(channels: &[&[ChannelDescription]], name: &str) -> bool {
+    channels.iter().any(|list| list.iter().any(|c| c.name.eq(name)))
+}
+
+fn has_prefix(channels: &[&[ChannelDescription]], prefix: &str) -> bool {
+    channels.iter().any(|list| {
+        list.iter()
+            .map(|c| c.name.to_string())
+            .any(|name| name.starts_with(prefix) && prefix.len() < name.len())
+    })
+}
+
+/// The layer part of a channel name ("diffuse" for "diffuse.R", "" for "R").
+fn layer_of(name: &str) -> &str {
+    name.rsplit_once('.').map_or("", |(layer, _)| layer)
+}
+
+impl Selection {
+    /// The layers selected among `inputs`' channels (for one input: its
+    /// own; for a merge: A's and B's).
+    pub fn resolve(&self, inputs: &[&[ChannelDescription]]) -> Vec<Layer> {
+        let view_prefix = |layer: &str| -> Option<String> {
+            let view = self.view.as_ref()?;
+            let prefix = if layer.is_empty() {
+                format!("{view}.")
+            } else {
+                format!("{layer}.{view}.")
+            };
+            has_prefix(inputs, &prefix).then_some(prefix)
+        };
+        let names: Vec<String> = if self.all {
+            Self::common_layers(inputs)
+        } else if self.layers.is_empty() {
+            vec![String::new()]
+        } else {
+            self.layers.clone()
+        };
+        let view_alpha = view_prefix("").map(|p| format!("{p}A"));
+        let mut layers: Vec<Layer> = names
+            .iter()
+            .map(|name| {
+                let prefix = view_prefix(name).unwrap_or_else(|| match name.as_str() {
+                    "" => String::new(),
+                    _ => format!("{name}."),
+                });
+                let mut alphas = vec![format!("{prefix}A")];
+                alphas.extend(view_alpha.clone());
+                alphas.push("A".into());
+                alphas.dedup();
+                Layer { prefix, alphas }
+            })
+            .collect();
+        layers.dedup_by(|a, b| a.prefix == b.prefix);
+        layers
+    }
+
+    /// Layers with a colour channel in every input, in name order ("" first);
+    /// view channels count as layers of their own ("left" for `left.R`).
+    fn common_layers(inputs: &[&[ChannelDescription]]) -> Vec<String> {
+        let colour_layers = |list: &[ChannelDescription]| -> Vec<String> {
+            list.iter()
+                .map(|c| c.name.to_string())
+                .filter(|n| COLOUR.iter().any(|c| n.rsplit('.').next() == Some(c)))
+                .map(|n| layer_of(&n).to_string())
+                .collect()
+        };
+        let mut names = colour_layers(inputs[0]);
+        names.retain(|n| inputs[1..].iter().all(|list| colour_layers(list).contains(n)));
+        names.sort();
+        names.dedup();
+        names
+    }
+}
+
+impl Selection {
+    /// An error naming the first selected layer that no input has, with the
+    /// layers they do have.
+    pub fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        for layer in self.resolve(inputs) {
+            let present = layer.colours().any(|c| has(inputs, &c)) || has(inputs, &layer.alpha_channel());
+            if !present {
+                let mut found: Vec<String> = Self::common_layers(&inputs[..1]);
+                found.iter_mut().filter(|n| n.is_empty()).for_each(|n| *n = "(unnamed)".into());
+                let name = layer.prefix.trim_end_matches('.');
+                let name = if name.is_empty() { "(unnamed)" } else { name };
+                return Err(format!(
+                    "layer '{name}' not found (layers with colour: {})",
+                    found.join(", ")
+                ));
+            }
+        }
+        Ok(())
+    }
+}

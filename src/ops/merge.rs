@@ -1,0 +1,319 @@
+//! Two-input merges, A (top) with B (bottom): the Porter-Duff operators and
+//! the arithmetic ones, as in Nuke's Merge. Formulas: specs/ops.md, "merge".
+
+use super::layers::{Layer, Selection};
+use crate::engine::graph::{intersection, union, Op};
+use crate::engine::strip::Rows;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum MergeOp {
+    Over,
+    Under,
+    In,
+    Out,
+    Atop,
+    Xor,
+    Plus,
+    Minus,
+    From,
+    Multiply,
+    Screen,
+    Max,
+    Min,
+    Difference,
+    Divide,
+    Mask,
+    Stencil,
+    Copy,
+}
+
+/// Which inputs' data windows bound the result (where it can be nonzero).
+enum Extent {
+    Union,
+    Intersection,
+    A,
+    B,
+}
+
+impl MergeOp {
+    /// Colour from premultiplied colours `a`, `b` and alphas `aa`, `ab`.
+    pub fn colour(self, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
+        use MergeOp::*;
+        match self {
+            Over => a + (1.0 - aa) * b,
+            Under => b + (1.0 - ab) * a,
+            In => a * ab,
+            Out => a * (1.0 - ab),
+            Atop => a * ab + b * (1.0 - aa),
+            Xor => a * (1.0 - ab) + b * (1.0 - aa),
+            Plus => a + b,
+            Minus => a - b,
+            From => b - a,
+            Multiply => a * b,
+            // Above 1 on both sides the formula would darken: take the larger.
+            Screen if a > 1.0 && b > 1.0 => a.max(b),
+            Screen => a + b - a * b,
+            Max => a.max(b),
+            Min => a.min(b),
+            Difference => (a - b).abs(),
+            Divide if b == 0.0 => 0.0,
+            Divide => a / b,
+            Mask => b * aa,
+            Stencil => b * (1.0 - aa),
+            Copy => a,
+        }
+    }
+
+    /// Result alpha: the colour formula applied to the alphas (which is the
+    /// Porter-Duff alpha for the compositing operators).
+    pub fn alpha(self, aa: f32, ab: f32) -> f32 {
+        use MergeOp::*;
+        match self {
+            // a·αB + B(1 - αA) on alphas is αB, up to rounding.
+            Atop => ab,
+            _ => self.colour(aa, aa, ab, ab),
+        }
+    }
+
+    /// Whether a transparent black A (colour and alpha 0) leaves B as it is.
+    fn keeps_b_under_nothing(self) -> bool {
+        use MergeOp::*;
+        matches!(self, Over | Under | Atop | Xor | Plus | From | Stencil)
+    }
+
+    fn extent(self) -> Extent {
+        use MergeOp::*;
+        match self {
+            In | Mask | Multiply | Divide => Extent::Intersection,
+            Out | Copy => Extent::A,
+            Atop | Stencil => Extent::B,
+            _ => Extent::Union,
+        }
+    }
+}
+
+pub struct Merge {
+    pub op: MergeOp,
+    /// Inputs and output are straight colour: premultiply, merge, unpremultiply.
+    pub straight: bool,
+    /// 0..1: the result blended with B (1: the result alone).
+    pub mix: f32,
+    pub layers: Selection,
+}
+
+/// What an output channel is.
+#[derive(Clone, Copy)]
+enum Role {
+    Colour(usize),
+    Alpha(usize),
+    FromB,
+}
+
+impl Merge {
+    fn roles(&self, out: &Rows, layers: &[Layer]) -> Vec<Role> {
+        out.channels
+            .iter()
+            .map(|c| {
+                let name = c.name.to_string();
+                layers
+                    .iter()
+                    .enumerate()
+                    .find_map(|(l, layer)| {
+                        if layer.colours().any(|n| n == name) {
+                            Some(Role::Colour(l))
+                        } else if layer.alpha_channel() == name {
+                            Some(Role::Alpha(l))
+                        } else {
+                            None
+                        }
+                    })
+                    .unwrap_or(Role::FromB)
+            })
+            .collect()
+    }
+
+    /// Where the result keeps B exactly: a transparent black A under an
+    /// operator that leaves B alone, with nothing to blend.
+    fn b_passes(&self) -> bool {
+        self.op.keeps_b_under_nothing() && !self.straight
+    }
+}
+
+impl Op for Merge {
+    /// B's channels, plus the selected layers' R, G, B, A that only A has.
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        let (a, b) = (inputs[0], inputs[1]);
+        let mut out = b.to_vec();
+        for layer in self.layers.resolve(inputs) {
+            for name in layer.colours().chain([layer.alpha_channel()]) {
+                let in_b = b.iter().any(|c| c.name.eq(name.as_str()));
+                if let Some(c) = a.iter().find(|c| c.name.eq(name.as_str())).filter(|_| !in_b) {
+                    out.push(c.clone());
+                }
+            }
+        }
+        out.sort_by(|x, y| x.name.bytes().cmp(y.name.bytes()));
+        out
+    }
+
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        self.layers.check(inputs)
+    }
+
+    fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+        let (a, b) = (inputs[0], inputs[1]);
+        let window = match self.op.extent() {
+            Extent::Union => union(a, b),
+            Extent::Intersection => intersection(a, b),
+            Extent::A => a,
+            Extent::B => b,
+        };
+        if self.mix < 1.0 {
+            union(window, b)
+        } else {
+            window
+        }
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+        let (a, b) = (inputs[0], inputs[1]);
+        let lists = [a.channels.as_slice(), b.channels.as_slice()];
+        let layers = self.layers.resolve(&lists);
+        let roles = self.roles(out, &layers);
+        let columns = out.valid_columns();
+        let w = columns.len();
+        let mut alphas = vec![(vec![0.0f32; w], vec![0.0f32; w], vec![0.0f32; w]); layers.len()];
+        let (mut ca, mut cb) = (vec![0.0f32; w], vec![0.0f32; w]);
+        let mut scratch = Vec::new();
+        for y in out.valid_rows() {
+            let row = out.row_range(y);
+            let dst = row.start + columns.start..row.start + columns.end;
+            let src = |rows: &Rows| {
+                let r = rows.row_range(y);
+                r.start + columns.start..r.start + columns.end
+            };
+            if self.b_passes() && transparent_black(a, &layers, y) {
+                for (c, role) in roles.iter().enumerate() {
+                    let name = out.channels[c].name.to_string();
+                    match (b.channel_index(&name), role) {
+                        (Some(s), _) => out.planes[c]
+                            .bytes_mut(dst.clone())
+                            .copy_from_slice(b.planes[s].bytes(src(b))),
+                        // An alpha only A has: B's alpha as B implies it.
+                        (None, Role::Alpha(l)) => {
+                            read_alpha_columns(&layers[*l], b, y, &columns, &mut cb, &mut scratch);
+                            out.planes[c].write_f32(dst.clone(), &cb);
+                        }
+                        (None, _) => {}
+                    }
+                }
+                continue;
+            }
+            for (layer, (aa, ab, ar)) in layers.iter().zip(alphas.iter_mut()) {
+                read_alpha_columns(layer, a, y, &columns, aa, &mut scratch);
+                read_alpha_columns(layer, b, y, &columns, ab, &mut scratch);
+                for x in 0..w {
+                    ar[x] = if self.b_passes() && aa[x] == 0.0 {
+                        ab[x]
+                    } else {
+                        blend(self.op.alpha(aa[x], ab[x]), ab[x], self.mix)
+                    };
+                }
+            }
+            for (c, role) in roles.iter().enumerate() {
+                let name = out.channels[c].name.to_string();
+                match *role {
+                    Role::Alpha(l) => out.planes[c].write_f32(dst.clone(), &alphas[l].2),
+                    Role::Colour(l) => {
+                        let (aa, ab, ar) = &alphas[l];
+                        read_or_zero(a, &name, src(a), &mut ca);
+                        read_or_zero(b, &name, src(b), &mut cb);
+                        for x in 0..w {
+                            ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
+                        }
+                        out.planes[c].write_f32(dst.clone(), &ca);
+                    }
+                    Role::FromB => {
+                        let s = b.channel_index(&name).expect("the channel comes from B");
+                        out.planes[c]
+                            .bytes_mut(dst.clone())
+                            .copy_from_slice(b.planes[s].bytes(src(b)));
+                    }
+                }
+            }
+        }
+    }
+}
+
+impl Merge {
+    /// One colour sample: `a`, `b` as stored, `ar` the result alpha.
+    fn colour(&self, a: f32, aa: f32, b: f32, ab: f32, ar: f32) -> f32 {
+        if self.b_passes() && aa == 0.0 && a == 0.0 {
+            // B exactly (the formula gives it too, but for a -0 in B).
+            return b;
+        }
+        if !self.straight {
+            return blend(self.op.colour(a, aa, b, ab), b, self.mix);
+        }
+        let (a, b) = (a * aa, b * ab);
+        let premultiplied = blend(self.op.colour(a, aa, b, ab), b, self.mix);
+        if ar == 0.0 {
+            0.0
+        } else {
+            premultiplied / ar
+        }
+    }
+}
+
+/// `mix` of the result over B: exactly the result at 1.
+fn blend(result: f32, b: f32, mix: f32) -> f32 {
+    if mix == 1.0 {
+        result
+    } else {
+        b + mix * (result - b)
+    }
+}
+
+/// Alpha of `layer` in `rows` for row `y`, the columns `columns` only.
+fn read_alpha_columns(
+    layer: &Layer,
+    rows: &Rows,
+    y: i32,
+    columns: &std::ops::Range<usize>,
+    out: &mut [f32],
+    scratch: &mut Vec<f32>,
+) {
+    scratch.resize(rows.width, 0.0);
+    layer.read_alpha(rows, y, scratch);
+    out.copy_from_slice(&scratch[columns.clone()]);
+}
+
+fn read_or_zero(rows: &Rows, name: &str, range: std::ops::Range<usize>, out: &mut [f32]) {
+    match rows.channel_index(name) {
+        Some(c) => rows.planes[c].read_f32(range, out),
+        None => out.fill(0.0),
+    }
+}
+
+/// Whether A is transparent black across row `y` in every selected layer:
+/// outside its data window, or each colour and alpha sample +0 with an
+/// alpha channel present.
+pub fn transparent_black(rows: &Rows, layers: &[Layer], y: i32) -> bool {
+    if !rows.valid_row(y) {
+        return true;
+    }
+    layers.iter().all(|layer| {
+        layer.alphas.iter().any(|n| rows.channel_index(n).is_some())
+            && layer
+                .colours()
+                .chain(layer.alphas.iter().cloned())
+                .filter_map(|n| rows.channel_index(&n))
+                .all(|c| {
+                    let bytes = rows.planes[c].bytes(rows.row_range(y));
+                    bytes
+                        .chunks(64)
+                        .all(|chunk| chunk.iter().fold(0, |acc, &b| acc | b) == 0)
+                })
+    })
+}
