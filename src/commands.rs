@@ -9,9 +9,9 @@ use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job};
 use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
+use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
-use crate::io::parts::split_part;
 use crate::ops::layers::Selection;
 use crate::ops::merge::{Merge, MergeOp};
 use crate::ops::premult::Premult;
@@ -63,8 +63,15 @@ pub fn run(command: Command) -> Result<()> {
             let ops = (0..n - 1)
                 .rev()
                 .map(|i| {
-                    let below = if i == n - 2 { n - 1 } else { n + (n - 2 - (i + 1)) };
-                    (merge_op(MergeOp::Over, straight, 1.0, &layers), vec![i, below])
+                    let below = if i == n - 2 {
+                        n - 1
+                    } else {
+                        n + (n - 2 - (i + 1))
+                    };
+                    (
+                        merge_op(MergeOp::Over, straight, 1.0, &layers),
+                        vec![i, below],
+                    )
                 })
                 .collect();
             let graph = Graph::chain(n, ops);

@@ -139,7 +139,8 @@ pub fn decode_strip(
     Ok(strips)
 }
 
-/// Copies the lines of `block` that fall in `rows` into `strip`.
+/// Copies the lines of `block` that fall in `rows` into `strip`, clipped to
+/// the strip's columns (an input can be wider than the result).
 fn copy_block(
     block: &UncompressedBlock,
     window: IntegerBounds,
@@ -148,19 +149,24 @@ fn copy_block(
 ) {
     let width = block.index.pixel_size.x();
     let block_top = window.position.y() + block.index.pixel_position.y() as i32;
-    let column = (window.position.x() + block.index.pixel_position.x() as i32 - strip.x) as usize;
+    let line_x = window.position.x() + block.index.pixel_position.x() as i32;
+    let x0 = line_x.max(strip.x);
+    let x1 = (line_x + width as i32).min(strip.x + strip.width as i32);
+    let (skip, count) = ((x0 - line_x).max(0) as usize, (x1 - x0).max(0) as usize);
+    let column = (x0 - strip.x).max(0) as usize;
     let mut offset = 0;
     for line in 0..block.index.pixel_size.y() {
         let y = block_top + line as i32;
         for (c, channel) in strip.channels.iter().enumerate() {
-            let bytes = width * channel.sample_type.bytes_per_sample();
-            if rows.contains(&y) {
+            let size = channel.sample_type.bytes_per_sample();
+            if rows.contains(&y) && count > 0 {
                 let start = strip.row_range(y).start + column;
+                let from = offset + skip * size;
                 strip.planes[c]
-                    .bytes_mut(start..start + width)
-                    .copy_from_slice(&block.data[offset..offset + bytes]);
+                    .bytes_mut(start..start + count)
+                    .copy_from_slice(&block.data[from..from + count * size]);
             }
-            offset += bytes;
+            offset += width * size;
         }
     }
 }

@@ -154,8 +154,14 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
             let lists: Vec<&[ChannelDescription]> =
                 args.iter().map(|&n| channels[n].as_slice()).collect();
             op.check(&lists).map_err(|m| {
-                let files: Vec<String> = inputs.iter().map(|f| f.path.display().to_string()).collect();
-                Error::new(Kind::Input, format!("frame {frame} ({}): {m}", files.join(", ")))
+                let files: Vec<String> = inputs
+                    .iter()
+                    .map(|f| f.path.display().to_string())
+                    .collect();
+                Error::new(
+                    Kind::Input,
+                    format!("frame {frame} ({}): {m}", files.join(", ")),
+                )
             })?;
         }
     }

@@ -35,19 +35,29 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
             .join(", ")
     };
     if let Some(part) = part {
-        let by_name = headers
-            .iter()
-            .position(|h| h.own_attributes.layer_name.as_ref().is_some_and(|n| n.eq(part)));
-        let by_index = part.parse::<usize>().ok().filter(|&i| i < headers.len());
-        return by_name.or(by_index).ok_or_else(|| {
-            file.error(format!("has no part '{part}' (parts: {})", names()))
+        let by_name = headers.iter().position(|h| {
+            h.own_attributes
+                .layer_name
+                .as_ref()
+                .is_some_and(|n| n.eq(part))
         });
+        let by_index = part.parse::<usize>().ok().filter(|&i| i < headers.len());
+        return by_name
+            .or(by_index)
+            .ok_or_else(|| file.error(format!("has no part '{part}' (parts: {})", names())));
     }
     if let Some(view) = view.filter(|_| headers.len() > 1) {
         return headers
             .iter()
-            .position(|h| h.own_attributes.view_name.as_ref().is_some_and(|n| n.eq(view)))
-            .ok_or_else(|| file.error(format!("has no part of view '{view}' (parts: {})", names())));
+            .position(|h| {
+                h.own_attributes
+                    .view_name
+                    .as_ref()
+                    .is_some_and(|n| n.eq(view))
+            })
+            .ok_or_else(|| {
+                file.error(format!("has no part of view '{view}' (parts: {})", names()))
+            });
     }
     Ok(0)
 }

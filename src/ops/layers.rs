@@ -49,7 +49,9 @@ impl Layer {
 }
 
 fn has(channels: &[&[ChannelDescription]], name: &str) -> bool {
-    channels.iter().any(|list| list.iter().any(|c| c.name.eq(name)))
+    channels
+        .iter()
+        .any(|list| list.iter().any(|c| c.name.eq(name)))
 }
 
 fn has_prefix(channels: &[&[ChannelDescription]], prefix: &str) -> bool {
@@ -115,7 +117,11 @@ impl Selection {
                 .collect()
         };
         let mut names = colour_layers(inputs[0]);
-        names.retain(|n| inputs[1..].iter().all(|list| colour_layers(list).contains(n)));
+        names.retain(|n| {
+            inputs[1..]
+                .iter()
+                .all(|list| colour_layers(list).contains(n))
+        });
         names.sort();
         names.dedup();
         names
@@ -127,10 +133,14 @@ impl Selection {
     /// layers they do have.
     pub fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         for layer in self.resolve(inputs) {
-            let present = layer.colours().any(|c| has(inputs, &c)) || has(inputs, &layer.alpha_channel());
+            let present =
+                layer.colours().any(|c| has(inputs, &c)) || has(inputs, &layer.alpha_channel());
             if !present {
                 let mut found: Vec<String> = Self::common_layers(&inputs[..1]);
-                found.iter_mut().filter(|n| n.is_empty()).for_each(|n| *n = "(unnamed)".into());
+                found
+                    .iter_mut()
+                    .filter(|n| n.is_empty())
+                    .for_each(|n| *n = "(unnamed)".into());
                 let name = layer.prefix.trim_end_matches('.');
                 let name = if name.is_empty() { "(unnamed)" } else { name };
                 return Err(format!(

@@ -148,7 +148,11 @@ impl Op for Merge {
         for layer in self.layers.resolve(inputs) {
             for name in layer.colours().chain([layer.alpha_channel()]) {
                 let in_b = b.iter().any(|c| c.name.eq(name.as_str()));
-                if let Some(c) = a.iter().find(|c| c.name.eq(name.as_str())).filter(|_| !in_b) {
+                if let Some(c) = a
+                    .iter()
+                    .find(|c| c.name.eq(name.as_str()))
+                    .filter(|_| !in_b)
+                {
                     out.push(c.clone());
                 }
             }

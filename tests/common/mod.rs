@@ -1,6 +1,6 @@
 //! Test helpers: writing and reading images through the exr crate's
 //! whole-image API (independent of exrcomp's block reader and writer), a
-//! naive whole-image reference `over`, running the binary, and the peers.
+//! naive whole-image reference merge, running the binary, and the peers.
 #![allow(dead_code)]
 
 use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
@@ -283,12 +283,16 @@ pub fn read_image(path: &Path) -> Img {
     }
 }
 
-/// Alpha at a pixel: the A channel, or 1 inside the data window without one;
-/// 0 outside the data window.
-fn alpha_at(img: &Img, x: i32, y: i32) -> f32 {
+/// Alpha at a pixel for a layer with channel prefix `prefix`: its own A,
+/// else the unnamed A, else 1 inside the data window; 0 outside it.
+fn alpha_at(img: &Img, prefix: &str, x: i32, y: i32) -> f32 {
     match img.index(x, y) {
         None => 0.0,
-        Some(i) => img.channels.get("A").map_or(1.0, |a| a.get_f32(i)),
+        Some(i) => img
+            .channels
+            .get(&format!("{prefix}A"))
+            .or(img.channels.get("A"))
+            .map_or(1.0, |a| a.get_f32(i)),
     }
 }
 
@@ -299,57 +303,156 @@ fn value_at(img: &Img, name: &str, x: i32, y: i32) -> f32 {
     }
 }
 
-/// The whole-image reference `over`, straight from specs/ops.md: loop over
-/// the union of the data windows, pixel by pixel, in f32.
-pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
-    let x0 = fg.x.min(bg.x);
-    let y0 = fg.y.min(bg.y);
-    let x1 = (fg.x + fg.width as i32).max(bg.x + bg.width as i32);
-    let y1 = (fg.y + fg.height as i32).max(bg.y + bg.height as i32);
+/// specs/ops.md's merge formulas, premultiplied, one sample.
+pub fn merge_formula(op: &str, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
+    match op {
+        "over" => a + (1.0 - aa) * b,
+        "under" => b + (1.0 - ab) * a,
+        "in" => a * ab,
+        "out" => a * (1.0 - ab),
+        "atop" => a * ab + b * (1.0 - aa),
+        "xor" => a * (1.0 - ab) + b * (1.0 - aa),
+        "plus" => a + b,
+        "minus" => a - b,
+        "from" => b - a,
+        "multiply" => a * b,
+        "screen" if a > 1.0 && b > 1.0 => a.max(b),
+        "screen" => a + b - a * b,
+        "max" => a.max(b),
+        "min" => a.min(b),
+        "difference" => (a - b).abs(),
+        "divide" if b == 0.0 => 0.0,
+        "divide" => a / b,
+        "mask" => b * aa,
+        "stencil" => b * (1.0 - aa),
+        "copy" => a,
+        _ => panic!("unknown operator {op}"),
+    }
+}
+
+pub const MERGE_OPS: [&str; 18] = [
+    "over",
+    "under",
+    "in",
+    "out",
+    "atop",
+    "xor",
+    "plus",
+    "minus",
+    "from",
+    "multiply",
+    "screen",
+    "max",
+    "min",
+    "difference",
+    "divide",
+    "mask",
+    "stencil",
+    "copy",
+];
+
+/// The whole-image reference merge of A over B (specs/ops.md): the result
+/// window by the operator's rule, then pixel by pixel in f32 for the layers
+/// with channel prefixes `layers` ("" is the unnamed one); other channels
+/// copied from B.
+pub fn reference_merge(
+    op: &str,
+    a: &Img,
+    b: &Img,
+    straight: bool,
+    mix: f32,
+    layers: &[&str],
+) -> Img {
+    let window = |img: &Img| {
+        (
+            img.x,
+            img.y,
+            img.x + img.width as i32,
+            img.y + img.height as i32,
+        )
+    };
+    let (wa, wb) = (window(a), window(b));
+    let union = (
+        wa.0.min(wb.0),
+        wa.1.min(wb.1),
+        wa.2.max(wb.2),
+        wa.3.max(wb.3),
+    );
+    let meet = (
+        wa.0.max(wb.0),
+        wa.1.max(wb.1),
+        wa.2.min(wb.2),
+        wa.3.min(wb.3),
+    );
+    let mut w = match op {
+        "in" | "mask" | "multiply" | "divide" => meet,
+        "out" | "copy" => wa,
+        "atop" | "stencil" => wb,
+        _ => union,
+    };
+    if mix < 1.0 {
+        w = (w.0.min(wb.0), w.1.min(wb.1), w.2.max(wb.2), w.3.max(wb.3));
+    }
+    let (x0, y0, x1, y1) = w;
     let (width, height) = ((x1 - x0) as usize, (y1 - y0) as usize);
+    // Where a transparent black A leaves B exactly as it is.
+    let keeps_b =
+        !straight && ["over", "under", "atop", "xor", "plus", "from", "stencil"].contains(&op);
     let mut channels: BTreeMap<String, Samples> = BTreeMap::new();
-    for (name, s) in &bg.channels {
+    for (name, s) in &b.channels {
         channels.insert(name.clone(), s.zeros_like(width * height));
     }
-    for name in ["R", "G", "B", "A"] {
-        if let (Some(s), false) = (fg.channels.get(name), bg.channels.contains_key(name)) {
-            channels.insert(name.to_string(), s.zeros_like(width * height));
+    for prefix in layers {
+        for base in ["R", "G", "B", "A"] {
+            let name = format!("{prefix}{base}");
+            if let (Some(s), false) = (a.channels.get(&name), b.channels.contains_key(&name)) {
+                channels.insert(name, s.zeros_like(width * height));
+            }
         }
     }
+    let blend = |r: f32, b: f32| if mix == 1.0 { r } else { b + mix * (r - b) };
     for (name, out) in channels.iter_mut() {
+        let (layer, base) = match name.rsplit_once('.') {
+            Some((l, base)) => (format!("{l}."), base),
+            None => (String::new(), name.as_str()),
+        };
+        let composited = layers.contains(&layer.as_str()) && ["R", "G", "B", "A"].contains(&base);
         for y in y0..y1 {
             for x in x0..x1 {
                 let i = (y - y0) as usize * width + (x - x0) as usize;
-                let fa = alpha_at(fg, x, y);
-                let ba = alpha_at(bg, x, y);
-                // Where A adds nothing (alpha and value 0), B's value as it is.
-                match name.as_str() {
-                    "A" if fa == 0.0 => out.set_f32(i, ba),
-                    "A" => out.set_f32(i, fa + (1.0 - fa) * ba),
-                    "R" | "G" | "B" => {
-                        let f = value_at(fg, name, x, y);
-                        let b = value_at(bg, name, x, y);
-                        let c = if straight {
-                            let a = fa + (1.0 - fa) * ba;
-                            let p = fa * f + (1.0 - fa) * (ba * b);
-                            if a == 0.0 {
-                                0.0
-                            } else {
-                                p / a
-                            }
-                        } else if fa == 0.0 && f == 0.0 {
-                            b
-                        } else {
-                            f + (1.0 - fa) * b
-                        };
-                        out.set_f32(i, c)
+                if !composited {
+                    if let Some(j) = b.index(x, y) {
+                        out.copy_from(i, &b.channels[name], j);
                     }
-                    _ => {
-                        if let Some(j) = bg.index(x, y) {
-                            out.copy_from(i, &bg.channels[name], j);
-                        }
-                    }
+                    continue;
                 }
+                let aa = alpha_at(a, &layer, x, y);
+                let ab = alpha_at(b, &layer, x, y);
+                let ar = if keeps_b && aa == 0.0 {
+                    ab
+                } else if op == "atop" {
+                    blend(ab, ab)
+                } else {
+                    blend(merge_formula(op, aa, aa, ab, ab), ab)
+                };
+                if base == "A" {
+                    out.set_f32(i, ar);
+                    continue;
+                }
+                let (ca, cb) = (value_at(a, name, x, y), value_at(b, name, x, y));
+                let c = if keeps_b && aa == 0.0 && ca == 0.0 {
+                    cb
+                } else if straight {
+                    let p = blend(merge_formula(op, ca * aa, aa, cb * ab, ab), cb * ab);
+                    if ar == 0.0 {
+                        0.0
+                    } else {
+                        p / ar
+                    }
+                } else {
+                    blend(merge_formula(op, ca, aa, cb, ab), cb)
+                };
+                out.set_f32(i, c);
             }
         }
     }
@@ -358,9 +461,14 @@ pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
         y: y0,
         width,
         height,
-        display: bg.display,
+        display: b.display,
         channels,
     }
+}
+
+/// `over` of the unnamed layer, as `exrcomp over` does it.
+pub fn reference_over(fg: &Img, bg: &Img, straight: bool) -> Img {
+    reference_merge("over", fg, bg, straight, 1.0, &[""])
 }
 
 /// Panics with the first differing sample unless `a` and `b` are identical

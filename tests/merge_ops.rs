@@ -1,0 +1,281 @@
+//! Every merge operator, premult and unpremult against the whole-image
+//! reference (tests/common) and against oiiotool where it has the operator.
+
+mod common;
+use common::*;
+use exr::prelude::{Compression, LineOrder};
+use half::f16;
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Command;
+
+/// `exrcomp merge --op OP A B -o OUT ARGS...`, which must succeed and be
+/// readable by OpenEXR; returns the output read back.
+fn merge(dir: &Path, op: &str, a: &Path, b: &Path, args: &[&str]) -> Img {
+    let out_path = dir.join(format!("{op}.exr"));
+    let mut command = vec!["merge", "--op", op, s(a), s(b), "-o", s(&out_path), "-q"];
+    command.extend_from_slice(args);
+    let out = run(&command);
+    assert!(
+        out.status.success(),
+        "merge --op {op} failed: {}",
+        stderr(&out)
+    );
+    read_image(&out_path)
+}
+
+fn write(dir: &Path, name: &str, img: &Img) -> std::path::PathBuf {
+    let path = dir.join(name);
+    write_image(&path, img, Compression::ZIP16, LineOrder::Increasing);
+    path
+}
+
+#[test]
+fn every_operator_equals_the_reference_premultiplied_straight_and_mixed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // Windows that overlap only in part, so union, intersection, A and B differ.
+    for (kind, tag) in [(Kind::Float, "float"), (Kind::Half, "half")] {
+        let a = random_rgba(11, 3, -2, 30, 20, kind, false);
+        let b_kind = if tag == "float" {
+            Kind::Float
+        } else {
+            Kind::Half
+        };
+        let b = random_rgba(12, -4, 5, 28, 22, b_kind, true);
+        let (pa, pb) = (write(d, "a.exr", &a), write(d, "b.exr", &b));
+        let (a, b) = (read_image(&pa), read_image(&pb));
+        for op in MERGE_OPS {
+            for (straight, mix) in [(false, 1.0), (true, 1.0), (false, 0.3), (true, 0.6)] {
+                let mix_text = mix.to_string();
+                let mut args = vec!["--mix", mix_text.as_str(), "--strip-rows", "7"];
+                if straight {
+                    args.push("--straight");
+                }
+                let ours = merge(d, op, &pa, &pb, &args);
+                let reference = reference_merge(op, &a, &b, straight, mix, &[""]);
+                assert_identical(&ours, &reference);
+            }
+        }
+    }
+}
+
+/// A 4x1 float RGBA image with these R values and alphas (G = B = R).
+fn row(values: [f32; 4], alphas: [f32; 4]) -> Img {
+    let mut channels = BTreeMap::new();
+    for name in ["R", "G", "B"] {
+        channels.insert(name.to_string(), Samples::F32(values.to_vec()));
+    }
+    channels.insert("A".to_string(), Samples::F32(alphas.to_vec()));
+    Img {
+        x: 0,
+        y: 0,
+        width: 4,
+        height: 1,
+        display: (4, 1),
+        channels,
+    }
+}
+
+fn red(img: &Img) -> Vec<f32> {
+    (0..img.width)
+        .map(|i| img.channels["R"].get_f32(i))
+        .collect()
+}
+
+#[test]
+fn the_documented_choices_divide_by_zero_screen_above_one_straight_alpha_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = write(
+        d,
+        "a.exr",
+        &row([2.0, 1.0, 0.5, -1.0], [1.0, 1.0, 0.0, 0.5]),
+    );
+    let b = write(
+        d,
+        "b.exr",
+        &row([3.0, 0.0, 0.25, 2.0], [1.0, 0.0, 0.0, 1.0]),
+    );
+    // divide: 0 where B is 0, never inf or NaN.
+    assert_eq!(
+        red(&merge(d, "divide", &a, &b, &[])),
+        [2.0 / 3.0, 0.0, 2.0, -0.5]
+    );
+    // screen: the larger value where both exceed 1, else A + B - AB.
+    assert_eq!(
+        red(&merge(d, "screen", &a, &b, &[])),
+        [3.0, 1.0, 0.625, 3.0]
+    );
+    // straight: where the result alpha is 0, colour 0 (no NaN from 0/0).
+    let ours = merge(d, "in", &a, &b, &["--straight"]);
+    assert_eq!(red(&ours), [2.0, 0.0, 0.0, -1.0]);
+    // mix 0 is B exactly.
+    assert_eq!(
+        red(&merge(d, "multiply", &a, &b, &["--mix", "0"])),
+        [3.0, 0.0, 0.25, 2.0]
+    );
+    // Out-of-range mix is a usage error.
+    let out = run(&[
+        "merge",
+        "--op",
+        "over",
+        s(&a),
+        s(&b),
+        "-o",
+        s(&d.join("x.exr")),
+        "--mix",
+        "2",
+    ]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+}
+
+/// oiiotool's name for each operator it shares with us.
+const OIIOTOOL: [(&str, &str); 8] = [
+    ("over", "--over"),
+    ("plus", "--add"),
+    ("minus", "--sub"),
+    ("multiply", "--mul"),
+    ("divide", "--div"),
+    ("max", "--max"),
+    ("min", "--min"),
+    ("difference", "--absdiff"),
+];
+
+/// `idiff -fail 0`: identical pixels.
+fn assert_idiff_identical(a: &Path, b: &Path) {
+    let Some(idiff) = peer("idiff") else { return };
+    let out = Command::new(idiff)
+        .args(["-fail", "0", "-warn", "0"])
+        .arg(a)
+        .arg(b)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "idiff: {} and {} differ:\n{}",
+        a.display(),
+        b.display(),
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
+
+#[test]
+fn operators_and_premult_equal_oiiotool() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // RGBA only and one window: oiiotool applies arithmetic to every channel.
+    let a = write(
+        d,
+        "a.exr",
+        &random_rgba(21, 2, 3, 40, 30, Kind::Float, false),
+    );
+    let mut b_img = random_rgba(22, 2, 3, 40, 30, Kind::Float, false);
+    // Colour where alpha is 0, which unpremult must leave alone.
+    let alpha: Vec<f32> = (0..b_img.width * b_img.height)
+        .map(|i| b_img.channels["A"].get_f32(i))
+        .collect();
+    if let Some(Samples::F32(r)) = b_img.channels.get_mut("R") {
+        for (r, &a) in r.iter_mut().zip(&alpha) {
+            if a == 0.0 {
+                *r = 0.75;
+            }
+        }
+    }
+    let b = write(d, "b.exr", &b_img);
+    for (op, flag) in OIIOTOOL {
+        let ours = d.join(format!("{op}.exr"));
+        merge(d, op, &a, &b, &[]);
+        let theirs = d.join(format!("{op}-oiio.exr"));
+        let status = Command::new(&oiiotool)
+            .arg(&a)
+            .arg(&b)
+            .arg(flag)
+            .arg("-o")
+            .arg(&theirs)
+            .status()
+            .unwrap();
+        assert!(status.success(), "oiiotool {flag}");
+        assert_peers_read(&ours);
+        assert_idiff_identical(&ours, &theirs);
+    }
+    for (command, flag) in [("premult", "--premult"), ("unpremult", "--unpremult")] {
+        let ours = d.join(format!("{command}.exr"));
+        let out = run(&[command, s(&b), "-o", s(&ours), "-q"]);
+        assert!(out.status.success(), "{}", stderr(&out));
+        let theirs = d.join(format!("{command}-oiio.exr"));
+        let status = Command::new(&oiiotool)
+            .arg(&b)
+            .arg(flag)
+            .arg("-o")
+            .arg(&theirs)
+            .status()
+            .unwrap();
+        assert!(status.success(), "oiiotool {flag}");
+        assert_idiff_identical(&ours, &theirs);
+    }
+}
+
+#[test]
+fn premult_and_unpremult_follow_the_formula_and_keep_other_channels() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let img = random_rgba(31, -3, 2, 25, 17, Kind::Half, true);
+    let input = write(d, "in.exr", &img);
+    let img = read_image(&input);
+    for (command, inverse) in [("premult", false), ("unpremult", true)] {
+        let out_path = d.join(format!("{command}.exr"));
+        let out = run(&[
+            command,
+            s(&input),
+            "-o",
+            s(&out_path),
+            "-q",
+            "--strip-rows",
+            "3",
+        ]);
+        assert!(out.status.success(), "{}", stderr(&out));
+        let ours = read_image(&out_path);
+        let mut expected = img.clone();
+        let alpha = img.channels["A"].clone();
+        for name in ["R", "G", "B"] {
+            if let (Samples::F16(c), Samples::F16(a)) =
+                (expected.channels.get_mut(name).unwrap(), &alpha)
+            {
+                for (c, a) in c.iter_mut().zip(a) {
+                    let (cv, av) = (c.to_f32(), a.to_f32());
+                    *c = f16::from_f32(match (inverse, av == 0.0) {
+                        (false, _) => cv * av,
+                        (true, true) => cv,
+                        (true, false) => cv / av,
+                    });
+                }
+            }
+        }
+        assert_identical(&ours, &expected);
+    }
+}
+
+#[test]
+fn output_keeps_b_header_attributes_and_names_exrcomp_as_software() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = write(d, "a.exr", &random_rgba(41, 0, 0, 8, 8, Kind::Half, false));
+    let b = write(d, "b.exr", &random_rgba(42, 0, 0, 8, 8, Kind::Half, false));
+    merge(d, "plus", &a, &b, &[]);
+    let meta = exr::meta::MetaData::read_from_file(d.join("plus.exr"), false).unwrap();
+    let attrs = &meta.headers[0].own_attributes;
+    assert_eq!(
+        attrs.comments.as_ref().map(|c| c.to_string()).as_deref(),
+        Some("written by the tests")
+    );
+    let software = attrs
+        .software_name
+        .as_ref()
+        .map(|t| t.to_string())
+        .unwrap_or_default();
+    assert!(software.starts_with("exrcomp "), "software: {software}");
+}
