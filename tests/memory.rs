@@ -27,27 +27,35 @@ fn generate_sequence(
     );
 }
 
-/// Peak RSS of an `over` run, as the run's JSON summary reports it.
+/// One memory measurement at a time (peaks come from the runs' JSON summaries).
 static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 /// The highest (`max`) or lowest peak RSS over `runs` runs of an `over`.
 fn peak_over_runs(dir: &Path, fg: &str, bg: &str, frames: &str, runs: usize, max: bool) -> u64 {
-    let peaks = (0..runs).map(|_| over_peak_rss(dir, fg, bg, frames));
+    peak_runs(dir, "over", &[fg, bg], frames, runs, max)
+}
+
+/// The highest (`max`) or lowest peak RSS over `runs` runs of `command`
+/// on `inputs` (file names in `dir`).
+fn peak_runs(
+    dir: &Path,
+    command: &str,
+    inputs: &[&str],
+    frames: &str,
+    runs: usize,
+    max: bool,
+) -> u64 {
+    let peaks = (0..runs).map(|_| peak_rss(dir, command, inputs, frames));
     if max { peaks.max() } else { peaks.min() }.unwrap()
 }
 
-fn over_peak_rss(dir: &Path, fg: &str, bg: &str, frames: &str) -> u64 {
-    let (fg, bg, out) = (dir.join(fg), dir.join(bg), dir.join("out/c.####.exr"));
-    let result = run(&[
-        "over",
-        fg.to_str().unwrap(),
-        bg.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-        "--frames",
-        frames,
-        "--json",
-    ]);
+fn peak_rss(dir: &Path, command: &str, inputs: &[&str], frames: &str) -> u64 {
+    let paths: Vec<String> = inputs.iter().map(|i| s(&dir.join(i)).to_string()).collect();
+    let out = dir.join("out/c.####.exr");
+    let mut args = vec![command];
+    args.extend(paths.iter().map(String::as_str));
+    args.extend(["-o", s(&out), "--frames", frames, "--json"]);
+    let result = run(&args);
     assert!(result.status.success(), "{}", stderr(&result));
     let summary: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
     summary["peak_rss_bytes"].as_u64().unwrap()
@@ -83,5 +91,27 @@ fn peak_memory_does_not_grow_with_frames() {
     assert!(
         many as f64 <= few as f64 * 1.25,
         "2 frames {few} B, 16 frames {many} B"
+    );
+}
+
+#[test]
+fn stack_peak_memory_does_not_grow_with_frames() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "f", "fg", 1024, 512, "1-12");
+    generate_sequence(d, "b", "bg", 1024, 512, "1-12");
+    for copy in ["g", "h"] {
+        for frame in 1..=12 {
+            let name = |n: &str| d.join(format!("{n}.{frame:04}.exr"));
+            std::fs::copy(name("f"), name(copy)).unwrap();
+        }
+    }
+    let layers = ["f.####.exr", "g.####.exr", "h.####.exr", "b.####.exr"];
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let few = peak_runs(d, "stack", &layers, "1-2", 3, true);
+    let many = peak_runs(d, "stack", &layers, "1-12", 2, false);
+    assert!(
+        many as f64 <= few as f64 * 1.25,
+        "4-layer stack: 2 frames {few} B, 12 frames {many} B"
     );
 }

@@ -221,7 +221,13 @@ pub fn random_rgba(
     }
 }
 
-pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order: LineOrder) {
+/// `img` as one layer (part) of an image, with `attributes` for its header.
+fn layer(
+    img: &Img,
+    attributes: LayerAttributes,
+    compression: Compression,
+    line_order: LineOrder,
+) -> Layer<AnyChannels<FlatSamples>> {
     let channels: Vec<AnyChannel<FlatSamples>> = img
         .channels
         .iter()
@@ -237,9 +243,9 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
     let attributes = LayerAttributes {
         layer_position: exr::math::Vec2(img.x, img.y),
         comments: Some("written by the tests".into()),
-        ..Default::default()
+        ..attributes
     };
-    let layer = Layer::new(
+    Layer::new(
         (img.width, img.height),
         attributes,
         Encoding {
@@ -248,10 +254,32 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
             line_order,
         },
         AnyChannels::sort(channels.into()),
-    );
+    )
+}
+
+pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order: LineOrder) {
+    let layer = layer(img, LayerAttributes::default(), compression, line_order);
     let mut image = Image::from_layer(layer);
     image.attributes.display_window =
         exr::meta::attribute::IntegerBounds::from_dimensions(img.display);
+    image.write().to_file(path).expect("test image written");
+}
+
+/// A multi-part file: per part its name, its view and its pixels (ZIP).
+pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
+    let layers: Vec<_> = parts
+        .iter()
+        .map(|(name, view, img)| {
+            let attributes = LayerAttributes {
+                layer_name: Some((*name).into()),
+                view_name: Some((*view).into()),
+                ..Default::default()
+            };
+            layer(img, attributes, Compression::ZIP16, LineOrder::Increasing)
+        })
+        .collect();
+    let display = exr::meta::attribute::IntegerBounds::from_dimensions(parts[0].2.display);
+    let image = Image::from_layers(exr::meta::header::ImageAttributes::new(display), layers);
     image.write().to_file(path).expect("test image written");
 }
 

@@ -1,0 +1,165 @@
+//! Layers (`--layer`, `--all-layers`), views (`--view`), parts
+//! (`file.exr:PART`, `--part`) and data windows per operator, on real files
+//! and on multi-part files written here.
+
+mod common;
+use common::*;
+use std::path::Path;
+
+fn merge_ok(args: &[&str]) {
+    let out = run(args);
+    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+}
+
+fn beachball(frame: u32) -> std::path::PathBuf {
+    shared_images().join(format!("Beachball/singlepart.{frame:04}.exr"))
+}
+
+#[test]
+fn beachball_composites_by_layer_by_view_and_all_layers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (a_path, b_path) = (beachball(2), beachball(1));
+    let (a, b) = (read_image(&a_path), read_image(&b_path));
+    let out = |name: &str| d.join(format!("{name}.exr"));
+    let over = |name: &str, args: &[&str]| {
+        let mut command = vec!["over", s(&a_path), s(&b_path), "-o"];
+        let path = out(name);
+        command.push(s(&path));
+        command.extend_from_slice(args);
+        command.push("-q");
+        merge_ok(&command);
+        read_image(&path)
+    };
+    let left = over("left", &["--layer", "left"]);
+    assert_identical(
+        &left,
+        &reference_merge("over", &a, &b, false, 1.0, &["left."]),
+    );
+    let all = over("all", &["--all-layers"]);
+    assert_identical(
+        &all,
+        &reference_merge("over", &a, &b, false, 1.0, &["", "left."]),
+    );
+    // The left view is the left.* channels; the right one (the file's
+    // default view) the unnamed ones.
+    assert_identical(&over("view-left", &["--view", "left"]), &left);
+    let plain = over("plain", &[]);
+    assert_identical(&over("view-right", &["--view", "right"]), &plain);
+    assert_identical(&plain, &reference_merge("over", &a, &b, false, 1.0, &[""]));
+    assert_peers_read(&out("all"));
+
+    let missing = run(&[
+        "over",
+        s(&a_path),
+        s(&b_path),
+        "-o",
+        s(&out("x")),
+        "--layer",
+        "diffuse",
+    ]);
+    assert_eq!(missing.status.code(), Some(3), "{}", stderr(&missing));
+    let message = stderr(&missing);
+    assert!(
+        message.contains("layer 'diffuse' not found") && message.contains("left"),
+        "{message}"
+    );
+}
+
+#[test]
+fn parts_are_chosen_by_name_index_view_and_option() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let fg_right = random_rgba(51, 0, 0, 24, 18, Kind::Half, false);
+    let fg_left = random_rgba(52, 2, 1, 20, 18, Kind::Half, false);
+    let bg_right = random_rgba(53, 0, 0, 24, 18, Kind::Half, true);
+    let bg_left = random_rgba(54, -1, 0, 24, 20, Kind::Half, true);
+    let (fg, bg) = (d.join("fg.exr"), d.join("bg.exr"));
+    write_parts(
+        &fg,
+        &[("right", "right", &fg_right), ("left", "left", &fg_left)],
+    );
+    write_parts(
+        &bg,
+        &[("right", "right", &bg_right), ("left", "left", &bg_left)],
+    );
+    let composite = |inputs: [String; 2], args: &[&str], name: &str| {
+        let path = d.join(format!("{name}.exr"));
+        let mut command = vec![
+            "over",
+            inputs[0].as_str(),
+            inputs[1].as_str(),
+            "-o",
+            s(&path),
+            "-q",
+        ];
+        command.extend_from_slice(args);
+        merge_ok(&command);
+        assert_peers_read(&path);
+        read_image(&path)
+    };
+    let with = |suffix: &str| [format!("{}{suffix}", s(&fg)), format!("{}{suffix}", s(&bg))];
+    let left = reference_over(&fg_left, &bg_left, false);
+    assert_identical(&composite(with(":left"), &[], "by-name"), &left);
+    assert_identical(&composite(with(":1"), &[], "by-index"), &left);
+    assert_identical(&composite(with(""), &["--view", "left"], "by-view"), &left);
+    assert_identical(
+        &composite(with(""), &["--part", "left"], "by-option"),
+        &left,
+    );
+    let right = reference_over(&fg_right, &bg_right, false);
+    assert_identical(&composite(with(""), &[], "first"), &right);
+
+    let [f, b] = with(":nope");
+    let out = run(&["over", &f, &b, "-o", s(&d.join("x.exr"))]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("no part 'nope' (parts: 0 (right), 1 (left))"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+/// The display window (position and size) of `path`'s first part.
+fn display_window(path: &Path) -> ((i32, i32), (usize, usize)) {
+    let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+    let w = meta.headers[0].shared_attributes.display_window;
+    (
+        (w.position.x(), w.position.y()),
+        (w.size.width(), w.size.height()),
+    )
+}
+
+#[test]
+fn data_windows_follow_each_operator_rule_on_the_display_window_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // A: data window (30, 40)-(429, 339); B: (0, 0)-(399, 299), display
+    // window (1, 1)-(400, 300). RGB without alpha: opaque inside the window.
+    let a_path = shared_images().join("DisplayWindow/t08.exr");
+    let b_path = shared_images().join("DisplayWindow/t02.exr");
+    let (a, b) = (read_image(&a_path), read_image(&b_path));
+    for (op, window) in [
+        ("over", (0, 0, 430, 340)),
+        ("in", (30, 40, 370, 260)),
+        ("copy", (30, 40, 400, 300)),
+        ("stencil", (0, 0, 400, 300)),
+        ("plus", (0, 0, 430, 340)),
+    ] {
+        let path = d.join(format!("{op}.exr"));
+        merge_ok(&[
+            "merge",
+            "--op",
+            op,
+            s(&a_path),
+            s(&b_path),
+            "-o",
+            s(&path),
+            "-q",
+        ]);
+        let ours = read_image(&path);
+        assert_eq!((ours.x, ours.y, ours.width, ours.height), window, "{op}");
+        assert_identical(&ours, &reference_merge(op, &a, &b, false, 1.0, &[""]));
+        assert_eq!(display_window(&path), display_window(&b_path), "{op}");
+    }
+}
