@@ -26,16 +26,8 @@ pub enum Command {
         fg: String,
         /// Background: its header, display window and other channels are kept.
         bg: String,
-        /// Output file or sequence.
-        #[arg(short, long)]
-        output: String,
-        /// Inputs and output are unpremultiplied (straight) colour.
-        #[arg(long)]
-        straight: bool,
         #[command(flatten)]
-        layers: LayerArgs,
-        #[command(flatten)]
-        run: RunArgs,
+        with: Composite,
     },
     /// Merge A (top) with B (bottom) by an operator, as Nuke's Merge does.
     Merge {
@@ -45,51 +37,28 @@ pub enum Command {
         a: String,
         /// Bottom input: its header, display window and other channels are kept.
         b: String,
-        #[arg(short, long)]
-        output: String,
-        /// Inputs and output are unpremultiplied (straight) colour.
-        #[arg(long)]
-        straight: bool,
         /// Blend the result with B: 0 gives B, 1 the result.
         #[arg(long, default_value_t = 1.0, value_parser = parse_mix)]
         mix: f32,
         #[command(flatten)]
-        layers: LayerArgs,
-        #[command(flatten)]
-        run: RunArgs,
+        with: Composite,
     },
     /// Composite layers L1 over L2 over ... Ln in one pass (L1 on top).
     Stack {
         /// Two or more inputs, top first; the last one's header is kept.
         #[arg(required = true, num_args = 2..)]
         inputs: Vec<String>,
-        #[arg(short, long)]
-        output: String,
-        /// Inputs and output are unpremultiplied (straight) colour.
-        #[arg(long)]
-        straight: bool,
         #[command(flatten)]
-        layers: LayerArgs,
-        #[command(flatten)]
-        run: RunArgs,
+        with: Composite,
     },
     /// Multiply colour by alpha.
-    Premult {
-        input: String,
-        #[arg(short, long)]
-        output: String,
-        #[command(flatten)]
-        layers: LayerArgs,
-        #[command(flatten)]
-        run: RunArgs,
-    },
+    Premult(OneInput),
     /// Divide colour by alpha (colour unchanged where alpha is 0).
-    Unpremult {
-        input: String,
-        #[arg(short, long)]
-        output: String,
-        #[command(flatten)]
-        layers: LayerArgs,
+    Unpremult(OneInput),
+    /// Run a job file: a graph of reads, operations and a write, streamed in
+    /// one pass (specs/job-format.md).
+    Run {
+        job: PathBuf,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -140,6 +109,33 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+}
+
+/// What every compositing command takes besides its inputs.
+#[derive(Args)]
+pub struct Composite {
+    /// Output file or sequence.
+    #[arg(short, long)]
+    pub output: String,
+    /// Inputs and output are unpremultiplied (straight) colour.
+    #[arg(long)]
+    pub straight: bool,
+    #[command(flatten)]
+    pub layers: LayerArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+/// An operation on one input.
+#[derive(Args)]
+pub struct OneInput {
+    pub input: String,
+    #[arg(short, long)]
+    pub output: String,
+    #[command(flatten)]
+    pub layers: LayerArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
 }
 
 /// Which layers, views and parts an operation works on.

@@ -1,6 +1,6 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, LayerArgs, RunArgs};
+use crate::cli::{Command, Composite, LayerArgs, OneInput, RunArgs};
 use crate::engine::graph::{Graph, Op};
 use crate::engine::interrupt;
 use crate::engine::pipeline;
@@ -13,7 +13,7 @@ use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::layers::Selection;
-use crate::ops::merge::{Merge, MergeOp};
+use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
@@ -23,73 +23,52 @@ use std::sync::Mutex;
 
 pub fn run(command: Command) -> Result<()> {
     match command {
-        Command::Over {
-            fg,
-            bg,
-            output,
-            straight,
-            layers,
-            run,
-        } => {
-            let merge = merge_op(MergeOp::Over, straight, 1.0, &layers);
-            let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
-            let (job, summary) = input_job(&[fg, bg], &output, graph, 1, &layers, &run)?;
-            run_job(&job, "over", &run, summary)
-        }
+        Command::Over { fg, bg, with } => merge(MergeOp::Over, 1.0, [fg, bg], with, "over"),
         Command::Merge {
             op,
             a,
             b,
-            output,
-            straight,
             mix,
-            layers,
-            run,
-        } => {
-            let merge = merge_op(op, straight, mix, &layers);
-            let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
-            let (job, summary) = input_job(&[a, b], &output, graph, 1, &layers, &run)?;
-            run_job(&job, "merge", &run, summary)
-        }
-        Command::Stack {
-            inputs,
-            output,
-            straight,
-            layers,
-            run,
-        } => {
-            // Bottom up: L(n-1) over L(n), then L(n-2) over that, ... L1 on top.
+            with,
+        } => merge(op, mix, [a, b], with, "merge"),
+        Command::Stack { inputs, with } => {
             let n = inputs.len();
-            let ops = (0..n - 1)
-                .rev()
-                .map(|i| {
-                    let below = if i == n - 2 {
-                        n - 1
-                    } else {
-                        n + (n - 2 - (i + 1))
-                    };
-                    (
-                        merge_op(MergeOp::Over, straight, 1.0, &layers),
-                        vec![i, below],
-                    )
-                })
-                .collect();
+            let mut ops = Vec::new();
+            let layer_nodes: Vec<usize> = (0..n).collect();
+            push_stack(&mut ops, n, &layer_nodes, || {
+                merge_op(MergeOp::Over, with.straight, 1.0, &with.layers)
+            });
             let graph = Graph::chain(n, ops);
-            let (job, summary) = input_job(&inputs, &output, graph, n - 1, &layers, &run)?;
-            run_job(&job, "stack", &run, summary)
+            let (job, summary) =
+                input_job(&inputs, &with.output, graph, n - 1, &with.layers, &with.run)?;
+            run_job(&job, "stack", &with.run, summary)
         }
-        Command::Premult {
-            input,
-            output,
-            layers,
-            run,
-        } => premult(false, input, &output, &layers, &run),
-        Command::Unpremult {
-            input,
-            output,
-            layers,
-            run,
-        } => premult(true, input, &output, &layers, &run),
+        Command::Premult(args) => premult(false, args),
+        Command::Unpremult(args) => premult(true, args),
+        Command::Run { job, run } => {
+            let plan = crate::job::load(&job)?;
+            let run = RunArgs {
+                frames: run.frames.clone().or(plan.frames),
+                compression: run.compression.clone().or(plan.compression),
+                ..run
+            };
+            let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
+            let (mut job, summary) = input_job(
+                &texts,
+                &plan.output,
+                plan.graph,
+                plan.header_from,
+                &LayerArgs::default(),
+                &run,
+            )?;
+            // A read's own `part` key, where its file name has no `:PART`.
+            for (asked, part) in job.parts.iter_mut().zip(parts) {
+                if asked.is_none() {
+                    *asked = part;
+                }
+            }
+            run_job(&job, "run", &run, summary)
+        }
         Command::Transcode { input, output, run } => {
             let graph = Graph::chain(1, Vec::new());
             let (job, summary) =
@@ -149,21 +128,29 @@ fn merge_op(op: MergeOp, straight: bool, mix: f32, layers: &LayerArgs) -> Box<dy
     })
 }
 
-fn premult(
-    inverse: bool,
-    input: String,
-    output: &str,
-    layers: &LayerArgs,
-    run: &RunArgs,
-) -> Result<()> {
+fn merge(op: MergeOp, mix: f32, inputs: [String; 2], with: Composite, name: &str) -> Result<()> {
+    let merge = merge_op(op, with.straight, mix, &with.layers);
+    let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
+    let (job, summary) = input_job(&inputs, &with.output, graph, 1, &with.layers, &with.run)?;
+    run_job(&job, name, &with.run, summary)
+}
+
+fn premult(inverse: bool, args: OneInput) -> Result<()> {
     let op: Box<dyn Op> = Box::new(Premult {
         inverse,
-        layers: selection(layers),
+        layers: selection(&args.layers),
     });
     let graph = Graph::chain(1, vec![(op, vec![0])]);
-    let (job, summary) = input_job(&[input], output, graph, 0, layers, run)?;
+    let (job, summary) = input_job(
+        &[args.input],
+        &args.output,
+        graph,
+        0,
+        &args.layers,
+        &args.run,
+    )?;
     let name = if inverse { "unpremult" } else { "premult" };
-    run_job(&job, name, run, summary)
+    run_job(&job, name, &args.run, summary)
 }
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
@@ -457,9 +444,7 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
     if !plates.quiet {
         eprintln!("compositing fg over bg into {}", pattern("comp"));
     }
-    self::run(Command::Over {
-        fg: pattern("fg"),
-        bg: pattern("bg"),
+    let with = Composite {
         output: pattern("comp"),
         straight: false,
         layers: LayerArgs::default(),
@@ -467,5 +452,12 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
             frames: Some(format!("{first}-{}", first + length as i64 - 1)),
             ..run.clone()
         },
-    })
+    };
+    merge(
+        MergeOp::Over,
+        1.0,
+        [pattern("fg"), pattern("bg")],
+        with,
+        "over",
+    )
 }

@@ -8,5 +8,6 @@ pub mod generate;
 pub mod guard;
 pub mod info;
 pub mod io;
+pub mod job;
 pub mod ops;
 pub mod report;

@@ -6,23 +6,6 @@ use common::*;
 use std::path::Path;
 use std::process::Command;
 
-/// `idiff -fail 0`: every pixel of every channel identical.
-fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
-    let out = Command::new(idiff)
-        .args(["-fail", "0", "-warn", "0"])
-        .arg(a)
-        .arg(b)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "idiff finds {} and {} differ:\n{}",
-        a.display(),
-        b.display(),
-        String::from_utf8_lossy(&out.stdout)
-    );
-}
-
 #[test]
 fn over_equals_oiiotool_over_with_offset_data_windows() {
     let (Some(oiiotool), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {

@@ -39,6 +39,19 @@ fn stack(dir: &std::path::Path, layers: &[Img], args: &[&str]) -> Img {
     read_image(&out)
 }
 
+/// The layers as written, and L1 over (L2 over (... over Ln)): what a chain
+/// of `over` runs through files gives.
+fn bottom_up(dir: &std::path::Path, count: usize) -> (Vec<Img>, Img) {
+    let read: Vec<Img> = (0..count)
+        .map(|i| read_image(&dir.join(format!("l{i}.exr"))))
+        .collect();
+    let mut result = read.last().unwrap().clone();
+    for layer in read.iter().rev().skip(1) {
+        result = reference_over(layer, &result, false);
+    }
+    (read, result)
+}
+
 /// Every sample within `tolerance` relative (absolute below 1).
 fn assert_close(a: &Img, b: &Img, tolerance: f32) {
     assert_eq!((a.x, a.y, a.width, a.height), (b.x, b.y, b.width, b.height));
@@ -65,15 +78,8 @@ fn stack_equals_over_folded_from_the_bottom_and_from_the_top() {
         let layers = layers(seed, || Kind::Float);
         let strip = (1 + seed % 3 * 7).to_string();
         let ours = stack(dir.path(), &layers, &["--strip-rows", &strip]);
-        let read: Vec<Img> = (0..layers.len())
-            .map(|i| read_image(&dir.path().join(format!("l{i}.exr"))))
-            .collect();
-        // L1 over (L2 over (... over Ln)): what a chain of `over` runs gives.
-        let mut bottom_up = read.last().unwrap().clone();
-        for layer in read.iter().rev().skip(1) {
-            bottom_up = reference_over(layer, &bottom_up, false);
-        }
-        assert_identical(&ours, &bottom_up);
+        let (read, reference) = bottom_up(dir.path(), layers.len());
+        assert_identical(&ours, &reference);
         // ((L1 over L2) over L3) ...: the same up to rounding.
         let mut top_down = read[0].clone();
         for layer in &read[1..] {
@@ -88,16 +94,9 @@ fn half_stack_equals_the_bottom_up_fold_and_is_readable_by_openexr() {
     let dir = tempfile::tempdir().unwrap();
     let layers = layers(9, || Kind::Half);
     let ours = stack(dir.path(), &layers, &[]);
-    let read: Vec<Img> = (0..layers.len())
-        .map(|i| read_image(&dir.path().join(format!("l{i}.exr"))))
-        .collect();
-    let mut bottom_up = read.last().unwrap().clone();
-    for layer in read.iter().rev().skip(1) {
-        // Half inputs, but each intermediate result rounded to half too, as
-        // a chain of files would be: the stack keeps intermediates in the
-        // inputs' half channels as well.
-        bottom_up = reference_over(layer, &bottom_up, false);
-    }
-    assert_identical(&ours, &bottom_up);
+    // Each intermediate result is rounded to half, in the stack's merges as
+    // in a chain of files.
+    let (_, reference) = bottom_up(dir.path(), layers.len());
+    assert_identical(&ours, &reference);
     assert_peers_read(&dir.path().join("stack.exr"));
 }

@@ -93,6 +93,23 @@ impl MergeOp {
     }
 }
 
+/// Appends to `ops` (whose first op is graph node `base`) a stack of graph
+/// nodes `layers` (top first) composited with `over()`, bottom up: the last
+/// op pushed is the result.
+pub fn push_stack(
+    ops: &mut Vec<(Box<dyn Op>, Vec<usize>)>,
+    base: usize,
+    layers: &[usize],
+    over: impl Fn() -> Box<dyn Op>,
+) {
+    let (bottom, above) = layers.split_last().expect("a stack has layers");
+    let mut below = *bottom;
+    for &layer in above.iter().rev() {
+        ops.push((over(), vec![layer, below]));
+        below = base + ops.len() - 1;
+    }
+}
+
 pub struct Merge {
     pub op: MergeOp,
     /// Inputs and output are straight colour: premultiply, merge, unpremultiply.

@@ -590,3 +590,20 @@ pub fn compression(name: &str) -> Compression {
         other => panic!("no compression {other} in the tests"),
     }
 }
+
+/// `idiff -fail 0`: every pixel of every channel identical.
+pub fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
+    let out = Command::new(idiff)
+        .args(["-fail", "0", "-warn", "0"])
+        .arg(a)
+        .arg(b)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "idiff finds {} and {} differ:\n{}",
+        a.display(),
+        b.display(),
+        String::from_utf8_lossy(&out.stdout)
+    );
+}

@@ -1,0 +1,415 @@
+//! Job files (`exrcomp run JOB.toml`): a graph of read, operation and write
+//! nodes, checked with errors that name the file's line, then built into one
+//! streaming `Graph`. The format: specs/job-format.md.
+
+use crate::engine::graph::{Graph, Op};
+use crate::error::{Error, Result};
+use crate::ops::layers::Selection;
+use crate::ops::merge::{push_stack, Merge, MergeOp};
+use crate::ops::premult::Premult;
+use clap::ValueEnum;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use serde::Deserialize;
+use std::collections::HashMap;
+use std::path::Path;
+use toml::Spanned;
+
+use crate::engine::strip::Rows;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct JobFile {
+    /// Frames, as `--frames` takes them; `--frames` wins.
+    frames: Option<String>,
+    #[serde(default)]
+    node: Vec<Spanned<NodeSpec>>,
+}
+
+/// One `[[node]]` table: exactly one of `read`, `op` or `write` says what
+/// it is; the other keys are that kind's parameters.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NodeSpec {
+    name: Spanned<String>,
+    read: Option<String>,
+    op: Option<Spanned<String>>,
+    write: Option<String>,
+    #[serde(default)]
+    inputs: Vec<Spanned<String>>,
+    part: Option<String>,
+    operator: Option<Spanned<String>>,
+    mix: Option<f32>,
+    straight: Option<bool>,
+    layers: Option<Vec<String>>,
+    all_layers: Option<bool>,
+    view: Option<String>,
+    compression: Option<String>,
+}
+
+/// A job file turned into what the engine runs.
+pub struct JobPlan {
+    /// Per read node, in graph order: the file pattern and the part asked for.
+    pub reads: Vec<(String, Option<String>)>,
+    pub graph: Graph,
+    /// The read whose header the output keeps (following B inputs down).
+    pub header_from: usize,
+    pub output: String,
+    pub compression: Option<String>,
+    pub frames: Option<String>,
+}
+
+/// A file name in the job as a path: relative ones are relative to the job
+/// file's folder, so a shot's job file travels with it.
+fn beside(job: &Path, file: &str) -> String {
+    match job.parent() {
+        Some(dir) if Path::new(file).is_relative() => dir.join(file).to_string_lossy().into_owned(),
+        _ => file.to_string(),
+    }
+}
+
+/// Where in the job file something is, for messages: "job.toml:12".
+struct Source<'a> {
+    path: &'a Path,
+    text: &'a str,
+}
+
+impl Source<'_> {
+    fn line(&self, offset: usize) -> usize {
+        self.text[..offset.min(self.text.len())]
+            .matches('\n')
+            .count()
+            + 1
+    }
+
+    fn error<T>(&self, span: std::ops::Range<usize>, message: impl std::fmt::Display) -> Result<T> {
+        Err(Error::usage(format!(
+            "{}:{}: {message}",
+            self.path.display(),
+            self.line(span.start)
+        )))
+    }
+}
+
+pub fn load(path: &Path) -> Result<JobPlan> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
+    let at = Source { path, text: &text };
+    let file: JobFile = toml::from_str(&text).map_err(|e| {
+        let line = e.span().map(|s| at.line(s.start)).unwrap_or(0);
+        Error::usage(format!("{}:{line}: {}", path.display(), e.message()))
+    })?;
+    build(&at, file)
+}
+
+enum Kind<'a> {
+    Read(&'a str),
+    Op,
+    Write(&'a str),
+}
+
+fn kind<'a>(at: &Source, node: &'a Spanned<NodeSpec>) -> Result<Kind<'a>> {
+    let spec = node.get_ref();
+    match (&spec.read, &spec.op, &spec.write) {
+        (Some(file), None, None) => Ok(Kind::Read(file)),
+        (None, Some(_), None) => Ok(Kind::Op),
+        (None, None, Some(file)) => Ok(Kind::Write(file)),
+        _ => at.error(
+            node.span(),
+            format!(
+                "node '{}' needs exactly one of read, op or write",
+                spec.name.get_ref()
+            ),
+        ),
+    }
+}
+
+fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
+    let nodes = &file.node;
+    let mut by_name: HashMap<&str, usize> = HashMap::new();
+    for (i, node) in nodes.iter().enumerate() {
+        let name = &node.get_ref().name;
+        if by_name.insert(name.get_ref(), i).is_some() {
+            return at.error(
+                name.span(),
+                format!("a second node named '{}'", name.get_ref()),
+            );
+        }
+    }
+    let kinds: Vec<Kind> = nodes.iter().map(|n| kind(at, n)).collect::<Result<_>>()?;
+    let writes: Vec<usize> = (0..nodes.len())
+        .filter(|&i| matches!(kinds[i], Kind::Write(_)))
+        .collect();
+    let write = match writes[..] {
+        [w] => w,
+        [] => {
+            return Err(Error::usage(format!(
+                "{}: the job has no write node",
+                at.path.display()
+            )))
+        }
+        [_, second, ..] => {
+            return at.error(
+                nodes[second].span(),
+                "only one write node per job is supported",
+            )
+        }
+    };
+    // Each node's inputs by index, every name checked.
+    let mut inputs: Vec<Vec<usize>> = Vec::with_capacity(nodes.len());
+    for node in nodes {
+        let mut list = Vec::new();
+        for input in &node.get_ref().inputs {
+            match by_name.get(input.get_ref().as_str()) {
+                Some(&i) if matches!(kinds[i], Kind::Write(_)) => {
+                    return at.error(
+                        input.span(),
+                        format!("'{}' is a write node", input.get_ref()),
+                    )
+                }
+                Some(&i) => list.push(i),
+                None => {
+                    return at.error(input.span(), format!("unknown node '{}'", input.get_ref()))
+                }
+            }
+        }
+        inputs.push(list);
+    }
+
+    // Every operation checked (op, operator, input count) before the graph is.
+    for (n, node) in nodes.iter().enumerate() {
+        if matches!(kinds[n], Kind::Op) {
+            let _checked = operation(at, node, inputs[n].len())?;
+        }
+    }
+    // Depth first from the write: reads first, then operations so that each
+    // comes after its inputs; a node met again while open closes a cycle.
+    let mut order: Vec<usize> = Vec::new();
+    let mut state = vec![0u8; nodes.len()]; // 0 new, 1 open, 2 done
+    let root = match inputs[write][..] {
+        [root] => root,
+        _ => {
+            return at.error(
+                nodes[write].span(),
+                "the write node needs exactly one input",
+            )
+        }
+    };
+    visit(at, nodes, &inputs, root, &mut state, &mut order)?;
+    for (i, node) in nodes.iter().enumerate() {
+        if i != write && state[i] == 0 {
+            return at.error(
+                node.span(),
+                format!(
+                    "node '{}' is not used by the write",
+                    node.get_ref().name.get_ref()
+                ),
+            );
+        }
+    }
+    let reads: Vec<usize> = order
+        .iter()
+        .copied()
+        .filter(|&i| matches!(kinds[i], Kind::Read(_)))
+        .collect();
+    let ops: Vec<usize> = order
+        .iter()
+        .copied()
+        .filter(|&i| matches!(kinds[i], Kind::Op))
+        .collect();
+
+    // Graph node of each job node: reads 0..r, then operations (a stack
+    // node becomes a chain of merges; its graph node is the last).
+    let mut graph_index: HashMap<usize, usize> = HashMap::new();
+    for (g, &r) in reads.iter().enumerate() {
+        graph_index.insert(r, g);
+    }
+    let mut graph_ops: Vec<(Box<dyn Op>, Vec<usize>)> = Vec::new();
+    for &n in &ops {
+        let args: Vec<usize> = inputs[n].iter().map(|i| graph_index[i]).collect();
+        let place = format!(
+            "{}:{} (node '{}')",
+            at.path.display(),
+            at.line(nodes[n].span().start),
+            nodes[n].get_ref().name.get_ref()
+        );
+        let make = operation(at, &nodes[n], args.len())?;
+        let located = || -> Box<dyn Op> {
+            Box::new(Located {
+                op: make(),
+                at: place.clone(),
+            })
+        };
+        if nodes[n]
+            .get_ref()
+            .op
+            .as_ref()
+            .is_some_and(|o| o.get_ref() == "stack")
+        {
+            push_stack(&mut graph_ops, reads.len(), &args, located);
+        } else {
+            graph_ops.push((located(), args));
+        }
+        graph_index.insert(n, reads.len() + graph_ops.len() - 1);
+    }
+    if ops.is_empty() && reads.len() != 1 {
+        return at.error(
+            nodes[write].span(),
+            "a write of a read needs that read alone",
+        );
+    }
+
+    // The header comes from the bottom-most input: follow the last input.
+    let mut source = root;
+    while let Some(&last) = inputs[source].last() {
+        source = last;
+    }
+    let Kind::Write(output) = kinds[write] else {
+        unreachable!("write is a write node")
+    };
+    Ok(JobPlan {
+        reads: reads
+            .iter()
+            .map(|&r| {
+                let Kind::Read(file) = kinds[r] else {
+                    unreachable!("reads are read nodes")
+                };
+                (beside(at.path, file), nodes[r].get_ref().part.clone())
+            })
+            .collect(),
+        header_from: reads.iter().position(|&r| r == source).unwrap_or(0),
+        graph: Graph::chain(reads.len(), graph_ops),
+        output: beside(at.path, output),
+        compression: nodes[write].get_ref().compression.clone(),
+        frames: file.frames,
+    })
+}
+
+fn visit(
+    at: &Source,
+    nodes: &[Spanned<NodeSpec>],
+    inputs: &[Vec<usize>],
+    n: usize,
+    state: &mut [u8],
+    order: &mut Vec<usize>,
+) -> Result<()> {
+    match state[n] {
+        2 => return Ok(()),
+        1 => {
+            return at.error(
+                nodes[n].span(),
+                format!(
+                    "node '{}' is part of a cycle",
+                    nodes[n].get_ref().name.get_ref()
+                ),
+            )
+        }
+        _ => {}
+    }
+    state[n] = 1;
+    for &i in &inputs[n] {
+        visit(at, nodes, inputs, i, state, order)?;
+    }
+    state[n] = 2;
+    order.push(n);
+    Ok(())
+}
+
+/// A maker of op node `node`'s operation, given its input count (a stack
+/// node makes its `over` merges).
+fn operation(
+    at: &Source,
+    node: &Spanned<NodeSpec>,
+    count: usize,
+) -> Result<Box<dyn Fn() -> Box<dyn Op>>> {
+    let spec = node.get_ref();
+    let op = spec.op.as_ref().expect("an op node");
+    let layers = Selection {
+        layers: spec.layers.clone().unwrap_or_default(),
+        all: spec.all_layers.unwrap_or(false),
+        view: spec.view.clone(),
+    };
+    let straight = spec.straight.unwrap_or(false);
+    let want = |counts: std::ops::RangeInclusive<usize>, what: &str| -> Result<()> {
+        if counts.contains(&count) {
+            Ok(())
+        } else {
+            at.error(
+                node.span(),
+                format!("op '{}' takes {what}, not {count}", op.get_ref()),
+            )
+        }
+    };
+    let selection = layers.clone();
+    let merge = move |op: MergeOp, mix: f32| -> Box<dyn Fn() -> Box<dyn Op>> {
+        let layers = selection.clone();
+        Box::new(move || {
+            Box::new(Merge {
+                op,
+                straight,
+                mix,
+                layers: layers.clone(),
+            })
+        })
+    };
+    Ok(match op.get_ref().as_str() {
+        "merge" | "over" => {
+            want(2..=2, "two inputs (A, B)")?;
+            let operator = match (&spec.operator, op.get_ref().as_str()) {
+                (None, "over") => MergeOp::Over,
+                (None, _) => return at.error(node.span(), "op 'merge' needs an operator"),
+                (Some(name), _) => MergeOp::from_str(name.get_ref(), true).or_else(|_| {
+                    at.error(
+                        name.span(),
+                        format!("unknown operator '{}'", name.get_ref()),
+                    )
+                })?,
+            };
+            let mix = spec.mix.unwrap_or(1.0);
+            if !(0.0..=1.0).contains(&mix) {
+                return at.error(node.span(), "mix must be from 0 to 1");
+            }
+            merge(operator, mix)
+        }
+        "stack" => {
+            want(2..=usize::MAX, "two or more inputs")?;
+            merge(MergeOp::Over, 1.0)
+        }
+        "premult" | "unpremult" => {
+            want(1..=1, "one input")?;
+            let inverse = op.get_ref() == "unpremult";
+            Box::new(move || {
+                Box::new(Premult {
+                    inverse,
+                    layers: layers.clone(),
+                }) as Box<dyn Op>
+            })
+        }
+        other => return at.error(op.span(), format!("unknown op '{other}'")),
+    })
+}
+
+/// An operation that names its job-file node in its errors.
+struct Located {
+    op: Box<dyn Op>,
+    at: String,
+}
+
+impl Op for Located {
+    fn halo(&self) -> usize {
+        self.op.halo()
+    }
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        self.op.channels(inputs)
+    }
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> std::result::Result<(), String> {
+        self.op
+            .check(inputs)
+            .map_err(|m| format!("{}: {m}", self.at))
+    }
+    fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+        self.op.data_window(inputs)
+    }
+    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows) {
+        self.op.compute(frame, inputs, out)
+    }
+}

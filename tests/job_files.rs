@@ -1,0 +1,152 @@
+//! `exrcomp run JOB.toml`: the examples in specs/, chains equal to the same
+//! steps run one by one, and errors that point at the job file's line.
+
+mod common;
+use common::*;
+use exr::prelude::{Compression, LineOrder};
+use std::path::Path;
+
+fn examples() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/examples")
+}
+
+fn ok(args: &[&str]) {
+    let out = run(args);
+    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+}
+
+/// Frames 1-4 of a float RGBA sequence `name` in `dir`.
+fn sequence(dir: &Path, name: &str, seed: u64, x: i32, extra: bool) {
+    for frame in 1..=4 {
+        let img = random_rgba(seed * 10 + frame, x, -1, 33, 21, Kind::Float, extra);
+        let path = dir.join(format!("{name}.{frame:04}.exr"));
+        write_image(&path, &img, Compression::ZIP16, LineOrder::Increasing);
+    }
+}
+
+#[test]
+fn the_over_example_writes_what_exrcomp_over_writes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    sequence(d, "fg", 1, 3, false);
+    sequence(d, "bg", 2, -2, true);
+    std::fs::copy(examples().join("over.toml"), d.join("over.toml")).unwrap();
+    ok(&["run", s(&d.join("over.toml")), "-q"]);
+    let (fg, bg, direct) = (
+        d.join("fg.####.exr"),
+        d.join("bg.####.exr"),
+        d.join("direct.####.exr"),
+    );
+    ok(&["over", s(&fg), s(&bg), "-o", s(&direct), "-q"]);
+    for frame in 1..=4 {
+        let name = |n: &str| d.join(format!("{n}.{frame:04}.exr"));
+        assert_eq!(
+            std::fs::read(name("comp")).unwrap(),
+            std::fs::read(name("direct")).unwrap(),
+            "frame {frame}"
+        );
+    }
+}
+
+#[test]
+fn the_chain_example_equals_its_steps_run_one_by_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    sequence(d, "element", 3, 0, false);
+    sequence(d, "grade", 4, 2, false);
+    sequence(d, "fx", 5, -3, false);
+    sequence(d, "bg", 6, 1, true);
+    std::fs::copy(examples().join("chain.toml"), d.join("chain.toml")).unwrap();
+    ok(&["run", s(&d.join("chain.toml")), "-q", "--strip-rows", "5"]);
+    // The same steps through files (float, so nothing is rounded between).
+    let p = |n: &str| d.join(format!("{n}.####.exr"));
+    ok(&["premult", s(&p("element")), "-o", s(&p("s1")), "-q"]);
+    ok(&[
+        "merge",
+        "--op",
+        "multiply",
+        "--mix",
+        "0.5",
+        s(&p("s1")),
+        s(&p("grade")),
+        "-o",
+        s(&p("s2")),
+        "-q",
+    ]);
+    ok(&[
+        "stack",
+        s(&p("fx")),
+        s(&p("s2")),
+        s(&p("bg")),
+        "-o",
+        s(&p("s3")),
+        "-q",
+        "--compression",
+        "zip",
+    ]);
+    for frame in 1..=4 {
+        let name = |n: &str| d.join(format!("{n}.{frame:04}.exr"));
+        assert_identical(&read_image(&name("comp")), &read_image(&name("s3")));
+    }
+    assert_peers_read(&d.join("comp.0001.exr"));
+}
+
+/// Writes `text` as a job file in `dir` with two inputs beside it; returns
+/// the run's exit code and message.
+fn run_job(dir: &Path, text: &str) -> (Option<i32>, String) {
+    sequence(dir, "a", 7, 0, false);
+    sequence(dir, "b", 8, 0, false);
+    let job = dir.join("job.toml");
+    std::fs::write(&job, text).unwrap();
+    let out = run(&["run", s(&job), "-q"]);
+    (out.status.code(), stderr(&out))
+}
+
+const READS: &str = "[[node]]\nname = \"a\"\nread = \"a.####.exr\"\n\n[[node]]\nname = \"b\"\nread = \"b.####.exr\"\n";
+
+#[test]
+fn errors_name_the_job_file_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let write = "\n[[node]]\nname = \"out\"\nwrite = \"o.####.exr\"\ninputs = [\"m\"]\n";
+    // (job body after the two reads (lines 1-8), expected line, expected words)
+    let cases = [
+        // The node starts on line 9; its keys follow.
+        ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\", \"nope\"]\n", 12, "unknown node 'nope'"),
+        ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\"]\n", 9, "takes two inputs"),
+        ("[[node]]\nname = \"m\"\nop = \"blend\"\ninputs = [\"a\", \"b\"]\n", 11, "unknown op 'blend'"),
+        ("[[node]]\nname = \"m\"\nop = \"merge\"\noperator = \"bogus\"\ninputs = [\"a\", \"b\"]\n", 12, "unknown operator 'bogus'"),
+        ("[[node]]\nname = \"m\"\nop = \"over\"\nmixx = 1\ninputs = [\"a\", \"b\"]\n", 12, "unknown field `mixx`"),
+        ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\", \"m2\"]\n\n[[node]]\nname = \"m2\"\nop = \"over\"\ninputs = [\"b\", \"m\"]\n", 9, "cycle"),
+        ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\" \"b\"]\n", 12, ""),
+    ];
+    for (body, line, words) in cases {
+        let (code, message) = run_job(d, &format!("{READS}\n{body}{write}"));
+        assert_eq!(code, Some(2), "{body}: {message}");
+        let at = format!("job.toml:{line}:");
+        assert!(
+            message.contains(&at) && message.contains(words),
+            "{body}\nwanted {at} {words}: {message}"
+        );
+    }
+    // Found when the frame is planned: a layer the inputs lack, at the node's line.
+    let body =
+        "[[node]]\nname = \"m\"\nop = \"over\"\nlayers = [\"diffuse\"]\ninputs = [\"a\", \"b\"]\n";
+    let (code, message) = run_job(d, &format!("{READS}\n{body}{write}"));
+    assert_eq!(code, Some(3), "{message}");
+    assert!(
+        message.contains("job.toml:9 (node 'm')") && message.contains("layer 'diffuse' not found"),
+        "{message}"
+    );
+    // A node the write does not use; no write at all.
+    let body = "[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n[[node]]\nname = \"out\"\nwrite = \"o.####.exr\"\ninputs = [\"a\"]\n";
+    let (code, message) = run_job(d, &format!("{READS}\n{body}"));
+    assert_eq!(code, Some(2), "{message}");
+    assert!(
+        message.contains("job.toml:5:") && message.contains("not used"),
+        "{message}"
+    );
+    let (code, message) = run_job(d, READS);
+    assert_eq!(code, Some(2), "{message}");
+    assert!(message.contains("no write node"), "{message}");
+}
