@@ -55,6 +55,16 @@ pub enum Command {
     Premult(OneInput),
     /// Divide colour by alpha (colour unchanged where alpha is 0).
     Unpremult(OneInput),
+    /// Blur with a separable Gaussian or box of radius R (edges clamp to the
+    /// data window); `--radius R` is oiiotool's `--blur (2R+1)x(2R+1)`.
+    Blur {
+        #[command(flatten)]
+        one: OneInput,
+        #[arg(long, value_parser = clap::value_parser!(u32).range(0..=4096))]
+        radius: u32,
+        #[arg(long, value_enum, default_value = "gaussian")]
+        filter: crate::ops::blur::Filter,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {

@@ -12,6 +12,7 @@ use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
+use crate::ops::blur;
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
@@ -42,6 +43,17 @@ pub fn run(command: Command) -> Result<()> {
             let (job, summary) =
                 input_job(&inputs, &with.output, graph, n - 1, &with.layers, &with.run)?;
             run_job(&job, "stack", &with.run, summary)
+        }
+        Command::Blur {
+            one,
+            radius,
+            filter,
+        } => {
+            let passes = blur::passes(filter, radius as usize, &selection(&one.layers), 0, 1);
+            let graph = Graph::chain(1, passes);
+            let (job, summary) =
+                input_job(&[one.input], &one.output, graph, 0, &one.layers, &one.run)?;
+            run_job(&job, "blur", &one.run, summary)
         }
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),

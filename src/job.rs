@@ -4,6 +4,7 @@
 
 use crate::engine::graph::{Graph, Op};
 use crate::error::{Error, Result};
+use crate::ops::blur::{self, Filter};
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
@@ -44,6 +45,8 @@ struct NodeSpec {
     all_layers: Option<bool>,
     view: Option<String>,
     compression: Option<String>,
+    radius: Option<u32>,
+    filter: Option<Spanned<String>>,
 }
 
 /// A job file turned into what the engine runs.
@@ -232,22 +235,23 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
             at.line(nodes[n].span().start),
             nodes[n].get_ref().name.get_ref()
         );
-        let make = operation(at, &nodes[n], args.len())?;
-        let located = || -> Box<dyn Op> {
+        let located = |op: Box<dyn Op>| -> Box<dyn Op> {
             Box::new(Located {
-                op: make(),
+                op,
                 at: place.clone(),
             })
         };
-        if nodes[n]
-            .get_ref()
-            .op
-            .as_ref()
-            .is_some_and(|o| o.get_ref() == "stack")
-        {
-            push_stack(&mut graph_ops, reads.len(), &args, located);
-        } else {
-            graph_ops.push((located(), args));
+        match operation(at, &nodes[n], args.len())? {
+            Recipe::One(make) => graph_ops.push((located(make()), args)),
+            Recipe::Stack(make) => {
+                push_stack(&mut graph_ops, reads.len(), &args, || located(make()))
+            }
+            Recipe::Blur(filter, radius, layers) => {
+                let next = reads.len() + graph_ops.len();
+                for (op, inputs) in blur::passes(filter, radius, &layers, args[0], next) {
+                    graph_ops.push((located(op), inputs));
+                }
+            }
         }
         graph_index.insert(n, reads.len() + graph_ops.len() - 1);
     }
@@ -314,13 +318,19 @@ fn visit(
     Ok(())
 }
 
-/// A maker of op node `node`'s operation, given its input count (a stack
-/// node makes its `over` merges).
-fn operation(
-    at: &Source,
-    node: &Spanned<NodeSpec>,
-    count: usize,
-) -> Result<Box<dyn Fn() -> Box<dyn Op>>> {
+type Make = Box<dyn Fn() -> Box<dyn Op>>;
+
+/// How an op node becomes graph operations.
+enum Recipe {
+    One(Make),
+    /// `over` merges, bottom up.
+    Stack(Make),
+    /// The two passes of a blur.
+    Blur(Filter, usize, Selection),
+}
+
+/// Op node `node`'s recipe, given its input count, every parameter checked.
+fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Recipe> {
     let spec = node.get_ref();
     let op = spec.op.as_ref().expect("an op node");
     let layers = Selection {
@@ -340,7 +350,7 @@ fn operation(
         }
     };
     let selection = layers.clone();
-    let merge = move |op: MergeOp, mix: f32| -> Box<dyn Fn() -> Box<dyn Op>> {
+    let merge = move |op: MergeOp, mix: f32| -> Make {
         let layers = selection.clone();
         Box::new(move || {
             Box::new(Merge {
@@ -368,21 +378,34 @@ fn operation(
             if !(0.0..=1.0).contains(&mix) {
                 return at.error(node.span(), "mix must be from 0 to 1");
             }
-            merge(operator, mix)
+            Recipe::One(merge(operator, mix))
         }
         "stack" => {
             want(2..=usize::MAX, "two or more inputs")?;
-            merge(MergeOp::Over, 1.0)
+            Recipe::Stack(merge(MergeOp::Over, 1.0))
+        }
+        "blur" => {
+            want(1..=1, "one input")?;
+            let filter = match &spec.filter {
+                None => Filter::Gaussian,
+                Some(name) => Filter::from_str(name.get_ref(), true).or_else(|_| {
+                    at.error(name.span(), format!("unknown filter '{}'", name.get_ref()))
+                })?,
+            };
+            let Some(radius) = spec.radius else {
+                return at.error(node.span(), "op 'blur' needs a radius");
+            };
+            Recipe::Blur(filter, radius as usize, layers)
         }
         "premult" | "unpremult" => {
             want(1..=1, "one input")?;
             let inverse = op.get_ref() == "unpremult";
-            Box::new(move || {
+            Recipe::One(Box::new(move || {
                 Box::new(Premult {
                     inverse,
                     layers: layers.clone(),
                 }) as Box<dyn Op>
-            })
+            }))
         }
         other => return at.error(op.span(), format!("unknown op '{other}'")),
     })

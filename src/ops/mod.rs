@@ -1,5 +1,6 @@
 //! Compositing operations, one family per file, as pure functions over strips.
 
+pub mod blur;
 pub mod layers;
 pub mod merge;
 pub mod premult;

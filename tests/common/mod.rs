@@ -106,7 +106,7 @@ impl Samples {
         }
     }
 
-    fn zeros_like(&self, len: usize) -> Samples {
+    pub fn zeros_like(&self, len: usize) -> Samples {
         match self {
             Samples::F16(_) => Samples::F16(vec![f16::ZERO; len]),
             Samples::F32(_) => Samples::F32(vec![0.0; len]),
@@ -114,7 +114,7 @@ impl Samples {
         }
     }
 
-    fn set_f32(&mut self, i: usize, value: f32) {
+    pub fn set_f32(&mut self, i: usize, value: f32) {
         match self {
             Samples::F16(v) => v[i] = f16::from_f32(value),
             Samples::F32(v) => v[i] = value,

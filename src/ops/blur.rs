@@ -1,0 +1,186 @@
+//! Separable blur as two graph nodes: a horizontal pass (no halo) into float
+//! rows, then a vertical pass with a halo of `radius` rows, so each input row
+//! is filtered horizontally once however the strips fall. Edges clamp to the
+//! data window. Formulas: specs/ops.md, "blur".
+
+use super::layers::Selection;
+use crate::engine::graph::Op;
+use crate::engine::strip::Rows;
+use exr::meta::attribute::{ChannelDescription, SampleType};
+use std::sync::Arc;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Filter {
+    Gaussian,
+    Box,
+}
+
+/// The 2R + 1 weights, taps -R..=R: the Gaussian that oiiotool's
+/// `--blur (2R+1)x(2R+1)` uses, exp(-8 k² / (2R+1)²) (sigma = (2R+1)/4),
+/// or a box; normalised to sum 1 in f64, then rounded to f32.
+pub fn weights(filter: Filter, radius: usize) -> Vec<f32> {
+    let width = (2 * radius + 1) as f64;
+    let raw: Vec<f64> = (0..2 * radius + 1)
+        .map(|i| {
+            let k = i as f64 - radius as f64;
+            match filter {
+                Filter::Gaussian => (-8.0 * k * k / (width * width)).exp(),
+                Filter::Box => 1.0,
+            }
+        })
+        .collect();
+    let sum: f64 = raw.iter().sum();
+    raw.iter().map(|w| (w / sum) as f32).collect()
+}
+
+/// The channels a blur filters: the selected layers' R, G, B and A.
+fn filtered(layers: &Selection, channels: &[&[ChannelDescription]]) -> Vec<String> {
+    let list = channels[0];
+    layers
+        .resolve(channels)
+        .iter()
+        .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
+        .filter(|n| list.iter().any(|c| c.name.eq(n.as_str())))
+        .collect()
+}
+
+/// The horizontal pass: the filtered channels only, as f32.
+pub struct Horizontal {
+    pub weights: Arc<Vec<f32>>,
+    pub layers: Selection,
+}
+
+/// The vertical pass over [horizontal pass, original]: the original's
+/// channels and types, the filtered ones from the first input.
+pub struct Vertical {
+    pub weights: Arc<Vec<f32>>,
+    pub layers: Selection,
+}
+
+impl Op for Horizontal {
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        let names = filtered(&self.layers, inputs);
+        inputs[0]
+            .iter()
+            .filter(|c| names.iter().any(|n| c.name.eq(n.as_str())))
+            .map(|c| ChannelDescription {
+                sample_type: SampleType::F32,
+                ..c.clone()
+            })
+            .collect()
+    }
+
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        self.layers.check(inputs)
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+        let input = inputs[0];
+        let columns = out.valid_columns();
+        let radius = self.weights.len() / 2;
+        let mut row = vec![0.0f32; input.width];
+        // The row with `radius` clamped samples added on each side.
+        let mut padded = vec![0.0f32; columns.len() + 2 * radius];
+        let mut sums = vec![0.0f32; columns.len()];
+        if columns.is_empty() {
+            return;
+        }
+        for y in out.valid_rows() {
+            for c in 0..out.channels.len() {
+                let name = out.channels[c].name.to_string();
+                let source = input.channel_index(&name).expect("a filtered channel");
+                input.planes[source].read_f32(input.row_range(y), &mut row);
+                let line = &row[columns.clone()];
+                let (first, last) = (line[0], line[line.len() - 1]);
+                padded[..radius].fill(first);
+                padded[radius..radius + line.len()].copy_from_slice(line);
+                padded[radius + line.len()..].fill(last);
+                for (x, sum) in sums.iter_mut().enumerate() {
+                    let mut acc = 0.0f32;
+                    for (w, v) in self.weights.iter().zip(&padded[x..]) {
+                        acc += w * v;
+                    }
+                    *sum = acc;
+                }
+                let range = out.row_range(y);
+                out.planes[c].write_f32(
+                    range.start + columns.start..range.start + columns.end,
+                    &sums,
+                );
+            }
+        }
+    }
+}
+
+impl Op for Vertical {
+    fn halo(&self) -> usize {
+        self.weights.len() / 2
+    }
+
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        inputs[1].to_vec()
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+        let (blurred, original) = (inputs[0], inputs[1]);
+        let radius = self.weights.len() as i32 / 2;
+        let rows = blurred.valid.position.y()..blurred.valid.end().y();
+        let columns = out.valid_columns();
+        let mut sums = vec![0.0f32; columns.len()];
+        let mut row = vec![0.0f32; blurred.width];
+        for y in out.valid_rows() {
+            let range = out.row_range(y);
+            let dst = range.start + columns.start..range.start + columns.end;
+            for c in 0..out.channels.len() {
+                let name = out.channels[c].name.to_string();
+                let Some(source) = blurred.channel_index(&name) else {
+                    let s = original
+                        .channel_index(&name)
+                        .expect("the original's channel");
+                    let bytes = original.planes[s].bytes(original.row_range(y));
+                    out.planes[c]
+                        .bytes_mut(range.clone())
+                        .copy_from_slice(bytes);
+                    continue;
+                };
+                sums.fill(0.0);
+                for (k, w) in (-radius..=radius).zip(self.weights.iter()) {
+                    let from = (y + k).clamp(rows.start, rows.end - 1);
+                    blurred.planes[source].read_f32(blurred.row_range(from), &mut row);
+                    for (sum, v) in sums.iter_mut().zip(&row[columns.clone()]) {
+                        *sum += w * v;
+                    }
+                }
+                out.planes[c].write_f32(dst.clone(), &sums);
+            }
+        }
+    }
+}
+
+/// A blur of graph node `input` as its two passes, to append to a graph
+/// whose next node is `next`: the last one is the result.
+pub fn passes(
+    filter: Filter,
+    radius: usize,
+    layers: &Selection,
+    input: usize,
+    next: usize,
+) -> Vec<(Box<dyn Op>, Vec<usize>)> {
+    let weights = Arc::new(weights(filter, radius));
+    vec![
+        (
+            Box::new(Horizontal {
+                weights: weights.clone(),
+                layers: layers.clone(),
+            }) as Box<dyn Op>,
+            vec![input],
+        ),
+        (
+            Box::new(Vertical {
+                weights,
+                layers: layers.clone(),
+            }),
+            vec![next, input],
+        ),
+    ]
+}
