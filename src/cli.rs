@@ -65,6 +65,58 @@ pub enum Command {
         #[arg(long, value_enum, default_value = "gaussian")]
         filter: crate::ops::blur::Filter,
     },
+    /// Depth of field from a depth channel: each pixel spreads over an
+    /// aperture whose radius grows with its distance from the focus plane.
+    Defocus {
+        #[command(flatten)]
+        one: OneInput,
+        /// Depth in focus.
+        #[arg(long)]
+        focus: f32,
+        /// Blur radius in pixels of what is far behind the focus plane:
+        /// radius = scale * |1 - focus / Z|.
+        #[arg(long)]
+        scale: f32,
+        /// Largest radius (the rows read above and below).
+        #[arg(long, value_parser = clap::value_parser!(u32).range(0..=512))]
+        max_radius: u32,
+        /// disc, hexagon, or N-gon (5-gon, 8-gon...).
+        #[arg(long, default_value = "disc", value_parser = crate::ops::defocus::Aperture::parse)]
+        aperture: crate::ops::defocus::Aperture,
+        #[arg(long, default_value = "Z")]
+        z_channel: String,
+    },
+    /// Motion blur from per-pixel displacement (pixels moved during the frame).
+    Vblur {
+        #[command(flatten)]
+        one: OneInput,
+        /// Scales the displacement: 0 for none, 1 as rendered.
+        #[arg(long, default_value_t = 1.0)]
+        scale: f32,
+        /// The x and y displacement channels (y down, in pixels).
+        #[arg(long, default_value = "forward.u,forward.v", value_parser = parse_pair)]
+        vectors: (String, String),
+        /// Rows a streak may reach; without it, a first pass over the vectors
+        /// measures it. A longer streak is an error, never cut.
+        #[arg(long)]
+        max_displacement: Option<u32>,
+    },
+    /// The other eye of a stereo pair from one view and its depth.
+    Stereo {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        /// The eye to make: pixels move right for the left eye, left for the right.
+        #[arg(long, value_enum)]
+        eye: crate::ops::stereo::Eye,
+        /// Shift in pixels at depth 1: a pixel at depth Z moves K / Z.
+        #[arg(long)]
+        disparity: f32,
+        #[arg(long, default_value = "Z")]
+        z_channel: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
@@ -203,6 +255,11 @@ pub struct RunArgs {
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
     pub strip_rows: Option<usize>,
+}
+
+fn parse_pair(text: &str) -> Result<(String, String), String> {
+    let (x, y) = text.split_once(',').ok_or("expected X,Y")?;
+    Ok((x.trim().to_string(), y.trim().to_string()))
 }
 
 fn parse_mix(text: &str) -> Result<f32, String> {

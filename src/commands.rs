@@ -12,7 +12,11 @@ use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
+use crate::engine::prepass::max_over_rows;
 use crate::ops::blur;
+use crate::ops::defocus::Defocus;
+use crate::ops::stereo::Stereo;
+use crate::ops::vblur::VectorBlur;
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
@@ -54,6 +58,69 @@ pub fn run(command: Command) -> Result<()> {
             let (job, summary) =
                 input_job(&[one.input], &one.output, graph, 0, &one.layers, &one.run)?;
             run_job(&job, "blur", &one.run, summary)
+        }
+        Command::Defocus {
+            one,
+            focus,
+            scale,
+            max_radius,
+            aperture,
+            z_channel,
+        } => {
+            let op = Defocus {
+                focus,
+                scale,
+                max_radius: max_radius as usize,
+                aperture,
+                z_channel,
+                layers: selection(&one.layers),
+            };
+            one_op(Box::new(op), one, "defocus")
+        }
+        Command::Vblur {
+            one,
+            scale,
+            vectors,
+            max_displacement,
+        } => {
+            let blur = |reach: usize| VectorBlur {
+                scale,
+                vectors: [vectors.0.clone(), vectors.1.clone()],
+                reach,
+                layers: selection(&one.layers),
+            };
+            let graph = |reach| Graph::chain(1, vec![(Box::new(blur(reach)) as Box<dyn Op>, vec![0])]);
+            let reach = max_displacement.unwrap_or(0) as usize;
+            let (mut job, summary) =
+                input_job(&[one.input.clone()], &one.output, graph(reach), 0, &one.layers, &one.run)?;
+            if max_displacement.is_none() {
+                let measure = blur(0);
+                let names = [vectors.0.as_str(), vectors.1.as_str()];
+                let reach = max_over_rows(&job, 0, names, |u, v| measure.rows_reached(u, v))?;
+                job.graph = graph(reach);
+            }
+            run_job(&job, "vblur", &one.run, summary)
+        }
+        Command::Stereo {
+            input,
+            output,
+            eye,
+            disparity,
+            z_channel,
+            run,
+        } => {
+            let op = Stereo {
+                eye,
+                disparity,
+                z_channel,
+            };
+            let one = OneInput {
+                input,
+                output,
+                layers: LayerArgs::default(),
+                run,
+            };
+            one_op(Box::new(op), one, "stereo")
         }
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
@@ -152,16 +219,14 @@ fn premult(inverse: bool, args: OneInput) -> Result<()> {
         inverse,
         layers: selection(&args.layers),
     });
+    one_op(op, args, if inverse { "unpremult" } else { "premult" })
+}
+
+/// A job of one operation on one input.
+fn one_op(op: Box<dyn Op>, args: OneInput, name: &str) -> Result<()> {
     let graph = Graph::chain(1, vec![(op, vec![0])]);
-    let (job, summary) = input_job(
-        &[args.input],
-        &args.output,
-        graph,
-        0,
-        &args.layers,
-        &args.run,
-    )?;
-    let name = if inverse { "unpremult" } else { "premult" };
+    let (job, summary) =
+        input_job(&[args.input], &args.output, graph, 0, &args.layers, &args.run)?;
     run_job(&job, name, &args.run, summary)
 }
 

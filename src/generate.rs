@@ -89,7 +89,7 @@ impl Op for Plate {
         IntegerBounds::new(self.origin, (self.width, self.height))
     }
 
-    fn compute(&self, frame: i64, _: &[&Rows], out: &mut Rows) {
+    fn compute(&self, frame: i64, _: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let (w, h) = (self.width as f32, self.height as f32);
         let (cx, speed) = self.disc(frame);
         let (cy, radius) = (h * 0.5, h * 0.25);
@@ -141,5 +141,6 @@ impl Op for Plate {
                 out.planes[c].write_f32(range.clone(), &values);
             }
         }
+        Ok(())
     }
 }

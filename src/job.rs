@@ -432,7 +432,12 @@ impl Op for Located {
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         self.op.data_window(inputs)
     }
-    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows) {
+    fn compute(
+        &self,
+        frame: i64,
+        inputs: &[&Rows],
+        out: &mut Rows,
+    ) -> std::result::Result<(), String> {
         self.op.compute(frame, inputs, out)
     }
 }

@@ -58,7 +58,12 @@ impl<'g> Composer<'g> {
 
     /// Takes strip `rows` of every input and returns the output rows that
     /// became complete, if any.
-    pub fn push(&mut self, frame: i64, rows: Range<i32>, strips: Vec<Rows>) -> Option<Rows> {
+    pub fn push(
+        &mut self,
+        frame: i64,
+        rows: Range<i32>,
+        strips: Vec<Rows>,
+    ) -> Result<Option<Rows>, String> {
         let mut strips: Vec<Option<Rows>> = strips.into_iter().map(Some).collect();
         self.fed = rows.end;
         for n in 0..self.graph.nodes.len() {
@@ -92,7 +97,7 @@ impl<'g> Composer<'g> {
                             node.valid,
                         );
                         let args: Vec<&Rows> = inputs.iter().map(|&i| &self.windows[i]).collect();
-                        op.compute(frame, &args, &mut out);
+                        op.compute(frame, &args, &mut out)?;
                         self.windows[n].append(out);
                     }
                 }
@@ -100,7 +105,7 @@ impl<'g> Composer<'g> {
         }
         let result = self.take_output();
         self.forget_used_rows();
-        result
+        Ok(result)
     }
 
     fn take_output(&mut self) -> Option<Rows> {
@@ -159,7 +164,7 @@ mod tests {
         fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
             inputs[0].to_vec()
         }
-        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
             let input = inputs[0];
             let h = self.halo as i32;
             for y in out.y..out.end() {
@@ -172,6 +177,7 @@ mod tests {
                 let range = out.row_range(y);
                 out.planes[0].write_f32(range, &sums);
             }
+            Ok(())
         }
     }
 
@@ -213,7 +219,7 @@ mod tests {
             let mut rows = Rows::zeros(0, y, 1, (end - y) as usize, channels[0].clone(), window);
             let slice = &values[(y - top) as usize..(end - top) as usize];
             rows.planes[0] = Samples::F32(slice.to_vec());
-            if let Some(done) = composer.push(0, y..end, vec![rows]) {
+            if let Some(done) = composer.push(0, y..end, vec![rows]).unwrap() {
                 assert_eq!(done.y, top + out.len() as i32, "rows come out in order");
                 let mut v = vec![0.0; done.height];
                 done.planes[0].read_f32(0..done.height, &mut v);
@@ -269,7 +275,7 @@ mod tests {
             let mut rows = Rows::zeros(0, y, 1, 8, channels[0].clone(), window);
             rows.planes[0] =
                 Samples::F32(values[(y - top) as usize..(y - top) as usize + 8].to_vec());
-            composer.push(0, y..y + 8, vec![rows]);
+            composer.push(0, y..y + 8, vec![rows]).unwrap();
             // Input rows kept: at most the strip plus twice the halo.
             assert!(
                 composer.windows[0].height <= 8 + 2 * 5,

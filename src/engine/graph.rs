@@ -33,7 +33,8 @@ pub trait Op: Send + Sync {
     /// for frame `frame`. Each input holds at least rows
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data
     /// window, in the same columns as `out`. An op without inputs is a source.
-    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows);
+    /// An error (bad values in an input, say) ends the frame with its message.
+    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String>;
 }
 
 pub enum Node {

@@ -7,5 +7,6 @@ pub mod graph;
 pub mod interrupt;
 pub mod pipeline;
 pub mod plan;
+pub mod prepass;
 pub mod sources;
 pub mod strip;

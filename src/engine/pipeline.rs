@@ -173,8 +173,9 @@ fn compose_stage(
                     .as_mut()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
                 match composer.push(frame, rows, strips) {
-                    Some(rows) => Msg::Strip(rows),
-                    None => continue,
+                    Ok(Some(rows)) => Msg::Strip(rows),
+                    Ok(None) => continue,
+                    Err(m) => return Err(Error::new(Kind::Input, format!("frame {frame}: {m}"))),
                 }
             }
             Msg::End => Msg::End,

@@ -74,7 +74,7 @@ impl Op for Horizontal {
         self.layers.check(inputs)
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let input = inputs[0];
         let columns = out.valid_columns();
         let radius = self.weights.len() / 2;
@@ -83,7 +83,7 @@ impl Op for Horizontal {
         let mut padded = vec![0.0f32; columns.len() + 2 * radius];
         let mut sums = vec![0.0f32; columns.len()];
         if columns.is_empty() {
-            return;
+            return Ok(());
         }
         for y in out.valid_rows() {
             for c in 0..out.channels.len() {
@@ -109,6 +109,7 @@ impl Op for Horizontal {
                 );
             }
         }
+        Ok(())
     }
 }
 
@@ -121,10 +122,11 @@ impl Op for Vertical {
         inputs[1].to_vec()
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let (blurred, original) = (inputs[0], inputs[1]);
         let radius = self.weights.len() as i32 / 2;
-        let rows = blurred.valid.position.y()..blurred.valid.end().y();
+        // The data window's rows (as far as they are held): the clamp's edges.
+        let rows = blurred.valid_rows();
         let columns = out.valid_columns();
         let mut sums = vec![0.0f32; columns.len()];
         let mut row = vec![0.0f32; blurred.width];
@@ -154,6 +156,7 @@ impl Op for Vertical {
                 out.planes[c].write_f32(dst.clone(), &sums);
             }
         }
+        Ok(())
     }
 }
 

@@ -197,7 +197,7 @@ impl Op for Merge {
         }
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let (a, b) = (inputs[0], inputs[1]);
         let lists = [a.channels.as_slice(), b.channels.as_slice()];
         let layers = self.layers.resolve(&lists);
@@ -264,6 +264,7 @@ impl Op for Merge {
                 }
             }
         }
+        Ok(())
     }
 }
 

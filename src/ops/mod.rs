@@ -1,6 +1,9 @@
 //! Compositing operations, one family per file, as pure functions over strips.
 
 pub mod blur;
+pub mod defocus;
 pub mod layers;
 pub mod merge;
 pub mod premult;
+pub mod stereo;
+pub mod vblur;

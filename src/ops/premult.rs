@@ -32,7 +32,7 @@ impl Op for Premult {
         self.layers.check(inputs)
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let input = inputs[0];
         let layers = self.layers.resolve(&[input.channels.as_slice()]);
         let mut alpha = vec![0.0f32; out.width];
@@ -59,5 +59,6 @@ impl Op for Premult {
                 }
             }
         }
+        Ok(())
     }
 }

@@ -1,0 +1,109 @@
+//! The other eye from one view and its depth: each pixel moves sideways by
+//! K / Z, the nearer pixel winning where two land on one; holes take the
+//! pixel beside them that is farther away (what the moved object uncovered).
+//! Row by row: no halo. specs/ops.md, "stereo".
+
+use crate::engine::graph::Op;
+use crate::engine::strip::Rows;
+use exr::meta::attribute::ChannelDescription;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Eye {
+    Left,
+    Right,
+}
+
+pub struct Stereo {
+    pub eye: Eye,
+    /// Pixels of shift at depth 1 (the shift is K / Z).
+    pub disparity: f32,
+    pub z_channel: String,
+}
+
+impl Stereo {
+    /// Columns a pixel at depth `z` moves: right for the left eye, left for
+    /// the right eye; none where the depth is not a positive number.
+    pub fn shift(&self, z: f32) -> i64 {
+        if !(z > 0.0) {
+            return 0;
+        }
+        let s = (self.disparity / z).round();
+        let s = if s.is_finite() { s as i64 } else { 0 };
+        match self.eye {
+            Eye::Left => s,
+            Eye::Right => -s,
+        }
+    }
+}
+
+impl Op for Stereo {
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        inputs[0].to_vec()
+    }
+
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        match inputs[0].iter().any(|c| c.name.eq(self.z_channel.as_str())) {
+            true => Ok(()),
+            false => Err(format!("no depth channel '{}'", self.z_channel)),
+        }
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+        let input = inputs[0];
+        let z = input.channel_index(&self.z_channel).expect("checked");
+        let columns = out.valid_columns();
+        let (start, end) = (columns.start as i64, columns.end as i64);
+        let mut depth = vec![0.0f32; input.width];
+        // Per output column: the source column and its depth.
+        let mut source: Vec<Option<(usize, f32)>> = vec![None; input.width];
+        for y in out.valid_rows() {
+            input.planes[z].read_f32(input.row_range(y), &mut depth);
+            source.fill(None);
+            for x in columns.clone() {
+                let to = x as i64 + self.shift(depth[x]);
+                if to < start || to >= end {
+                    continue;
+                }
+                let slot = &mut source[to as usize];
+                // Nearer wins; NaN depth never does.
+                if slot.is_none_or(|(_, d)| depth[x] < d) {
+                    *slot = Some((x, depth[x]));
+                }
+            }
+            // Nearest moved pixel on each side of every column, then holes.
+            let mut left = vec![None; input.width];
+            let mut last = None;
+            for x in columns.clone() {
+                last = source[x].or(last);
+                left[x] = last;
+            }
+            let mut next = None;
+            for x in columns.clone().rev() {
+                let right = next;
+                next = source[x].or(next);
+                if source[x].is_none() {
+                    source[x] = match (left[x], right) {
+                        (Some(l), Some(r)) => Some(if r.1 > l.1 { r } else { l }),
+                        (l, r) => l.or(r),
+                    };
+                }
+            }
+            let (from, to) = (input.row_range(y), out.row_range(y));
+            for (c, channel) in out.channels.iter().enumerate() {
+                let s = input
+                    .channel_index(&channel.name.to_string())
+                    .expect("the input's channel");
+                let size = channel.sample_type.bytes_per_sample();
+                for x in columns.clone() {
+                    if let Some((sx, _)) = source[x] {
+                        let bytes = input.planes[s].bytes(from.start + sx..from.start + sx + 1);
+                        out.planes[c]
+                            .bytes_mut(to.start + x..to.start + x + 1)
+                            .copy_from_slice(&bytes[..size]);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,136 @@
+//! Motion blur from per-pixel displacement: each pixel spreads its value
+//! evenly along the segment it moved during the frame. The halo is the
+//! largest vertical displacement; a longer one is an error, never a cut
+//! streak. Formulas: specs/ops.md, "vblur".
+
+use super::layers::Selection;
+use crate::engine::graph::Op;
+use crate::engine::strip::Rows;
+use exr::meta::attribute::ChannelDescription;
+
+pub struct VectorBlur {
+    /// Multiplies the displacement: 0 none, 1 as rendered.
+    pub scale: f32,
+    /// Channels holding the x and y displacement in pixels (y down).
+    pub vectors: [String; 2],
+    /// Rows above and below an output row that a streak can come from.
+    pub reach: usize,
+    pub layers: Selection,
+}
+
+impl VectorBlur {
+    /// The most rows any pixel of a displacement row `(du, dv)` streaks.
+    pub fn rows_reached(&self, du: &[f32], dv: &[f32]) -> usize {
+        du.iter()
+            .zip(dv)
+            .flat_map(|(&x, &y)| self.samples(x, y).map(|(_, oy)| oy.unsigned_abs() as usize))
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The pixel offsets a pixel moved by (dx, dy) spreads over: n =
+    /// max(1, round(length)) samples at t = k/n, k = 0..n, each rounded to
+    /// the nearest pixel and given 1/n of the value.
+    pub fn samples(&self, dx: f32, dy: f32) -> impl Iterator<Item = (i32, i32)> {
+        let (dx, dy) = (self.scale * dx, self.scale * dy);
+        let length = (dx * dx + dy * dy).sqrt();
+        let n = if length.is_finite() {
+            (length.round() as usize).max(1)
+        } else {
+            1
+        };
+        (0..n).map(move |k| {
+            let t = k as f32 / n as f32;
+            ((t * dx).round() as i32, (t * dy).round() as i32)
+        })
+    }
+}
+
+impl Op for VectorBlur {
+    fn halo(&self) -> usize {
+        self.reach
+    }
+
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        inputs[0].to_vec()
+    }
+
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        for name in &self.vectors {
+            if !inputs[0].iter().any(|c| c.name.eq(name.as_str())) {
+                return Err(format!("no displacement channel '{name}'"));
+            }
+        }
+        self.layers.check(inputs)
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+        let input = inputs[0];
+        let layers = self.layers.resolve(&[input.channels.as_slice()]);
+        let names: Vec<String> = layers
+            .iter()
+            .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
+            .filter(|n| input.channel_index(n).is_some())
+            .collect();
+        let (w, reach) = (input.width, self.reach as i32);
+        let columns = out.valid_columns();
+        let held = input.valid_rows();
+        let sources = (out.y - reach).max(held.start)..(out.end() + reach).min(held.end);
+        let (u, v) = (
+            input.channel_index(&self.vectors[0]).expect("checked"),
+            input.channel_index(&self.vectors[1]).expect("checked"),
+        );
+        let mut sums = vec![vec![0.0f32; out.height * w]; names.len()];
+        let (mut du, mut dv) = (vec![0.0f32; w], vec![0.0f32; w]);
+        let mut values = vec![vec![0.0f32; w]; names.len()];
+        for y in sources {
+            input.planes[u].read_f32(input.row_range(y), &mut du);
+            input.planes[v].read_f32(input.row_range(y), &mut dv);
+            for (name, row) in names.iter().zip(values.iter_mut()) {
+                let c = input.channel_index(name).expect("listed");
+                input.planes[c].read_f32(input.row_range(y), row);
+            }
+            for x in input.valid_columns() {
+                let samples: Vec<(i32, i32)> = self.samples(du[x], dv[x]).collect();
+                if let Some(&(_, oy)) = samples.iter().find(|(_, oy)| oy.abs() > reach) {
+                    return Err(format!(
+                        "pixel ({}, {y}) streaks {} rows, beyond the {reach} the blur reaches \
+                         (raise --max-displacement, or leave it out to measure it)",
+                        input.x + x as i32,
+                        oy.abs()
+                    ));
+                }
+                let share = 1.0 / samples.len() as f32;
+                for (ox, oy) in samples {
+                    let (tx, ty) = (x as i32 + ox, y + oy);
+                    if ty < out.y || ty >= out.end() || !out.valid_row(ty) {
+                        continue;
+                    }
+                    if tx < columns.start as i32 || tx >= columns.end as i32 {
+                        continue;
+                    }
+                    let at = (ty - out.y) as usize * w + tx as usize;
+                    for (sum, row) in sums.iter_mut().zip(&values) {
+                        sum[at] += share * row[x];
+                    }
+                }
+            }
+        }
+        for (c, channel) in out.channels.iter().enumerate() {
+            let name = channel.name.to_string();
+            match names.iter().position(|n| *n == name) {
+                Some(k) => out.planes[c].write_f32(0..out.height * w, &sums[k]),
+                None => {
+                    let s = input.channel_index(&name).expect("the input's channel");
+                    for y in out.valid_rows() {
+                        let range = out.row_range(y);
+                        out.planes[c]
+                            .bytes_mut(range)
+                            .copy_from_slice(input.planes[s].bytes(input.row_range(y)));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
