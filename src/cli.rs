@@ -121,6 +121,9 @@ pub enum Command {
     /// one pass (specs/job-format.md).
     Run {
         job: PathBuf,
+        /// Write here instead of the job's write node's file.
+        #[arg(short, long)]
+        output: Option<String>,
         #[command(flatten)]
         run: RunArgs,
     },

@@ -124,8 +124,11 @@ pub fn run(command: Command) -> Result<()> {
         }
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
-        Command::Run { job, run } => {
-            let plan = crate::job::load(&job)?;
+        Command::Run { job, output, run } => {
+            let mut plan = crate::job::load(&job)?;
+            if let Some(output) = output {
+                plan.output = output;
+            }
             let run = RunArgs {
                 frames: run.frames.clone().or(plan.frames),
                 compression: run.compression.clone().or(plan.compression),
