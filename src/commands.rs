@@ -6,20 +6,20 @@ use crate::engine::interrupt;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job};
+use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
-use crate::engine::prepass::max_over_rows;
 use crate::ops::blur;
-use crate::ops::defocus::Defocus;
-use crate::ops::stereo::Stereo;
-use crate::ops::vblur::VectorBlur;
+use crate::ops::defocus::{Aperture, Defocus};
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
+use crate::ops::stereo::Stereo;
+use crate::ops::vblur::VectorBlur;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -89,10 +89,17 @@ pub fn run(command: Command) -> Result<()> {
                 reach,
                 layers: selection(&one.layers),
             };
-            let graph = |reach| Graph::chain(1, vec![(Box::new(blur(reach)) as Box<dyn Op>, vec![0])]);
+            let graph =
+                |reach| Graph::chain(1, vec![(Box::new(blur(reach)) as Box<dyn Op>, vec![0])]);
             let reach = max_displacement.unwrap_or(0) as usize;
-            let (mut job, summary) =
-                input_job(&[one.input.clone()], &one.output, graph(reach), 0, &one.layers, &one.run)?;
+            let (mut job, summary) = input_job(
+                std::slice::from_ref(&one.input),
+                &one.output,
+                graph(reach),
+                0,
+                &one.layers,
+                &one.run,
+            )?;
             if max_displacement.is_none() {
                 let measure = blur(0);
                 let names = [vectors.0.as_str(), vectors.1.as_str()];
@@ -228,8 +235,14 @@ fn premult(inverse: bool, args: OneInput) -> Result<()> {
 /// A job of one operation on one input.
 fn one_op(op: Box<dyn Op>, args: OneInput, name: &str) -> Result<()> {
     let graph = Graph::chain(1, vec![(op, vec![0])]);
-    let (job, summary) =
-        input_job(&[args.input], &args.output, graph, 0, &args.layers, &args.run)?;
+    let (job, summary) = input_job(
+        &[args.input],
+        &args.output,
+        graph,
+        0,
+        &args.layers,
+        &args.run,
+    )?;
     run_job(&job, name, &args.run, summary)
 }
 
@@ -522,22 +535,54 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         }
     }
     if !plates.quiet {
-        eprintln!("compositing fg over bg into {}", pattern("comp"));
+        eprintln!(
+            "one pass into {}: fg motion-blurred by its forward.u/v, over bg defocused by its Z",
+            pattern("comp")
+        );
     }
-    let with = Composite {
-        output: pattern("comp"),
-        straight: false,
-        layers: LayerArgs::default(),
-        run: RunArgs {
-            frames: Some(format!("{first}-{}", first + length as i64 - 1)),
-            ..run.clone()
-        },
+    let run = RunArgs {
+        frames: Some(format!("{first}-{}", first + length as i64 - 1)),
+        ..run.clone()
     };
-    merge(
-        MergeOp::Over,
-        1.0,
-        [pattern("fg"), pattern("bg")],
-        with,
-        "over",
-    )
+    let layers = Selection::default();
+    let motion = |reach| VectorBlur {
+        scale: 1.0,
+        vectors: ["forward.u".into(), "forward.v".into()],
+        reach,
+        layers: layers.clone(),
+    };
+    let graph = |reach| {
+        let defocus = Defocus {
+            focus: 5.0,
+            scale: 4.0,
+            max_radius: 4,
+            aperture: Aperture::Polygon(6),
+            z_channel: "Z".into(),
+            layers: layers.clone(),
+        };
+        let over = merge_op(MergeOp::Over, false, 1.0, &LayerArgs::default());
+        Graph::chain(
+            2,
+            vec![
+                (Box::new(motion(reach)) as Box<dyn Op>, vec![0]),
+                (Box::new(defocus), vec![1]),
+                (over, vec![2, 3]),
+            ],
+        )
+    };
+    let inputs = [pattern("fg"), pattern("bg")];
+    let (mut job, summary) = input_job(
+        &inputs,
+        &pattern("comp"),
+        graph(0),
+        1,
+        &LayerArgs::default(),
+        &run,
+    )?;
+    let measure = motion(0);
+    let reach = max_over_rows(&job, 0, ["forward.u", "forward.v"], |u, v| {
+        measure.rows_reached(u, v)
+    })?;
+    job.graph = graph(reach);
+    run_job(&job, "demo", &run, summary)
 }

@@ -7,10 +7,10 @@ use crate::error::{Error, Result};
 use crate::ops::blur::{self, Filter};
 use crate::ops::defocus::{Aperture, Defocus};
 use crate::ops::layers::Selection;
-use crate::ops::stereo::{Eye, Stereo};
-use crate::ops::vblur::VectorBlur;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
+use crate::ops::stereo::{Eye, Stereo};
+use crate::ops::vblur::VectorBlur;
 use clap::ValueEnum;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
@@ -423,11 +423,17 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             want(1..=1, "one input")?;
             let aperture = match &spec.aperture {
                 None => Aperture::Disc,
-                Some(text) => Aperture::parse(text.get_ref()).or_else(|m| at.error(text.span(), m))?,
+                Some(text) => {
+                    Aperture::parse(text.get_ref()).or_else(|m| at.error(text.span(), m))?
+                }
             };
-            let (Some(focus), Some(scale), Some(max_radius)) = (spec.focus, spec.scale, spec.max_radius)
+            let (Some(focus), Some(scale), Some(max_radius)) =
+                (spec.focus, spec.scale, spec.max_radius)
             else {
-                return at.error(node.span(), "op 'defocus' needs focus, scale and max_radius");
+                return at.error(
+                    node.span(),
+                    "op 'defocus' needs focus, scale and max_radius",
+                );
             };
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
             Recipe::One(Box::new(move || {
@@ -445,13 +451,18 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             want(1..=1, "one input")?;
             // A job's input can be any node: no first pass, the reach is given.
             let Some(reach) = spec.max_displacement else {
-                return at.error(node.span(), "op 'vblur' needs max_displacement in a job file");
+                return at.error(
+                    node.span(),
+                    "op 'vblur' needs max_displacement in a job file",
+                );
             };
             let vectors = match &spec.vectors {
                 None => ["forward.u".to_string(), "forward.v".to_string()],
                 Some(v) => match &v.get_ref()[..] {
                     [x, y] => [x.clone(), y.clone()],
-                    _ => return at.error(v.span(), "vectors are two channel names: [\"u\", \"v\"]"),
+                    _ => {
+                        return at.error(v.span(), "vectors are two channel names: [\"u\", \"v\"]")
+                    }
                 },
             };
             let scale = spec.scale.unwrap_or(1.0);
@@ -469,8 +480,12 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             let (Some(eye), Some(disparity)) = (&spec.eye, spec.disparity) else {
                 return at.error(node.span(), "op 'stereo' needs eye and disparity");
             };
-            let eye = Eye::from_str(eye.get_ref(), true)
-                .or_else(|_| at.error(eye.span(), format!("eye is left or right, not '{}'", eye.get_ref())))?;
+            let eye = Eye::from_str(eye.get_ref(), true).or_else(|_| {
+                at.error(
+                    eye.span(),
+                    format!("eye is left or right, not '{}'", eye.get_ref()),
+                )
+            })?;
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
             Recipe::One(Box::new(move || {
                 Box::new(Stereo {

@@ -19,9 +19,16 @@ fn scene(
 ) -> Img {
     let mut img = random_rgba(seed, x, y, width, height, Kind::Float, false);
     let n = width * height;
-    img.channels.insert("Z".into(), Samples::F32((0..n).map(&depth).collect()));
-    img.channels.insert("forward.u".into(), Samples::F32((0..n).map(|i| motion(i).0).collect()));
-    img.channels.insert("forward.v".into(), Samples::F32((0..n).map(|i| motion(i).1).collect()));
+    img.channels
+        .insert("Z".into(), Samples::F32((0..n).map(&depth).collect()));
+    img.channels.insert(
+        "forward.u".into(),
+        Samples::F32((0..n).map(|i| motion(i).0).collect()),
+    );
+    img.channels.insert(
+        "forward.v".into(),
+        Samples::F32((0..n).map(|i| motion(i).1).collect()),
+    );
     img
 }
 
@@ -39,15 +46,19 @@ const COLOURS: [&str; 4] = ["R", "G", "B", "A"];
 
 // ---- defocus -------------------------------------------------------------
 
-fn inside(aperture: u32, dx: f32, dy: f32, r: f32) -> bool {
+/// The smallest radius of the aperture (0: the disc) that reaches (dx, dy).
+fn need(aperture: u32, dx: f32, dy: f32) -> f32 {
     if aperture == 0 {
-        return dx * dx + dy * dy <= r * r;
+        return (dx * dx + dy * dy).sqrt();
     }
     let apothem = (PI / aperture as f32).cos();
-    (0..aperture).all(|k| {
-        let angle = PI / 2.0 + 2.0 * PI * k as f32 / aperture as f32;
-        dx * angle.cos() + dy * angle.sin() <= r * apothem
-    })
+    (0..aperture)
+        .map(|k| {
+            let angle = PI / 2.0 + 2.0 * PI * k as f32 / aperture as f32;
+            dx * angle.cos() + dy * angle.sin()
+        })
+        .fold(f32::MIN, f32::max)
+        / apothem
 }
 
 fn area(aperture: u32, r: f32) -> f32 {
@@ -83,7 +94,8 @@ fn reference_defocus(img: &Img, focus: f32, scale: f32, max: usize, aperture: u3
                         let q = (yq * w + xq) as usize;
                         let (dx, dy) = ((x - xq) as f32, (y - yq) as f32);
                         let rq = coc(z(q));
-                        if !inside(aperture, dx, dy, rq) || (z(q) > zp && !inside(aperture, dx, dy, rp)) {
+                        let d = need(aperture, dx, dy);
+                        if d > rq || (z(q) > zp && d > rp) {
                             continue;
                         }
                         let weight = 1.0 / area(aperture, rq);
@@ -109,10 +121,24 @@ fn defocus_equals_the_reference_for_apertures_blocks_strips_and_short_images() {
         ("none", (2, 3, 15, 4), 0, "disc"),
     ] {
         let mut rng = Lcg(window.2 as u64);
-        let depths: Vec<f32> = (0..window.2 * window.3).map(|_| 2.0 + 20.0 * rng.next()).collect();
+        let depths: Vec<f32> = (0..window.2 * window.3)
+            .map(|_| 2.0 + 20.0 * rng.next())
+            .collect();
         let img = scene(81, window, |i| depths[i], |_| (0.0, 0.0));
         for strip in ["1", "7", "64"] {
-            let args = ["defocus", "--focus", "6", "--scale", "9", "--max-radius", "5", "--aperture", name, "--strip-rows", strip];
+            let args = [
+                "defocus",
+                "--focus",
+                "6",
+                "--scale",
+                "9",
+                "--max-radius",
+                "5",
+                "--aperture",
+                name,
+                "--strip-rows",
+                strip,
+            ];
             let ours = exrcomp_on(d, &img, codec, &args);
             assert_identical(&ours, &reference_defocus(&img, 6.0, 9.0, 5, aperture));
         }
@@ -123,12 +149,27 @@ fn defocus_equals_the_reference_for_apertures_blocks_strips_and_short_images() {
 fn a_point_in_focus_stays_a_point_in_front_of_a_blurred_background() {
     let dir = tempfile::tempdir().unwrap();
     let (width, height, at) = (31, 29, 15 * 31 + 14);
-    let mut img = scene(82, (0, 0, width, height), |i| if i == at { 10.0 } else { 100.0 }, |_| (0.0, 0.0));
+    let mut img = scene(
+        82,
+        (0, 0, width, height),
+        |i| if i == at { 10.0 } else { 100.0 },
+        |_| (0.0, 0.0),
+    );
     for name in COLOURS {
-        let v: Vec<f32> = (0..width * height).map(|i| if i == at { 4.0 } else { 0.25 }).collect();
+        let v: Vec<f32> = (0..width * height)
+            .map(|i| if i == at { 4.0 } else { 0.25 })
+            .collect();
         img.channels.insert(name.into(), Samples::F32(v));
     }
-    let args = ["defocus", "--focus", "10", "--scale", "8", "--max-radius", "8"];
+    let args = [
+        "defocus",
+        "--focus",
+        "10",
+        "--scale",
+        "8",
+        "--max-radius",
+        "8",
+    ];
     let ours = exrcomp_on(dir.path(), &img, "zip", &args);
     for i in 0..width * height {
         let v = ours.channels["R"].get_f32(i);
@@ -152,13 +193,17 @@ fn reference_vblur(img: &Img, scale: f32) -> Img {
         for y in 0..h {
             for x in 0..w {
                 let i = (y * w + x) as usize;
-                let (dx, dy) = (scale * img.channels["forward.u"].get_f32(i), scale * img.channels["forward.v"].get_f32(i));
+                let (dx, dy) = (
+                    scale * img.channels["forward.u"].get_f32(i),
+                    scale * img.channels["forward.v"].get_f32(i),
+                );
                 let n = ((dx * dx + dy * dy).sqrt().round() as usize).max(1);
                 for k in 0..n {
                     let t = k as f32 / n as f32;
                     let (tx, ty) = (x + (t * dx).round() as i64, y + (t * dy).round() as i64);
                     if tx >= 0 && tx < w && ty >= 0 && ty < h {
-                        sums[(ty * w + tx) as usize] += (1.0 / n as f32) * img.channels[name].get_f32(i);
+                        sums[(ty * w + tx) as usize] +=
+                            (1.0 / n as f32) * img.channels[name].get_f32(i);
                     }
                 }
             }
@@ -175,7 +220,11 @@ fn reference_vblur(img: &Img, scale: f32) -> Img {
 fn vblur_equals_the_reference_with_and_without_a_given_reach() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    for (codec, window) in [("zips", (-4, 3, 25, 30)), ("zip", (0, -5, 20, 41)), ("piz", (3, 0, 22, 6))] {
+    for (codec, window) in [
+        ("zips", (-4, 3, 25, 30)),
+        ("zip", (0, -5, 20, 41)),
+        ("piz", (3, 0, 22, 6)),
+    ] {
         let mut rng = Lcg(window.3 as u64);
         let motion: Vec<(f32, f32)> = (0..window.2 * window.3)
             .map(|_| (12.0 * rng.next() - 6.0, 14.0 * rng.next() - 7.0))
@@ -194,7 +243,11 @@ fn vblur_equals_the_reference_with_and_without_a_given_reach() {
             command.extend_from_slice(&args[1..]);
             let result = run(&command);
             if reach.is_some() && result.status.code() == Some(3) {
-                assert!(stderr(&result).contains("beyond the 8 the blur reaches"), "{}", stderr(&result));
+                assert!(
+                    stderr(&result).contains("beyond the 8 the blur reaches"),
+                    "{}",
+                    stderr(&result)
+                );
                 continue;
             }
             assert!(result.status.success(), "{}", stderr(&result));
@@ -207,17 +260,29 @@ fn vblur_equals_the_reference_with_and_without_a_given_reach() {
 fn a_moving_pixel_becomes_a_streak_of_length_scale_times_displacement() {
     let dir = tempfile::tempdir().unwrap();
     let (width, height, at) = (40, 9, 4 * 40 + 5);
-    let mut img = scene(84, (0, 0, width, height), |_| 1.0, |i| if i == at { (6.0, 0.0) } else { (0.0, 0.0) });
+    let mut img = scene(
+        84,
+        (0, 0, width, height),
+        |_| 1.0,
+        |i| if i == at { (6.0, 0.0) } else { (0.0, 0.0) },
+    );
     for name in COLOURS {
-        let v: Vec<f32> = (0..width * height).map(|i| if i == at { 3.0 } else { 0.0 }).collect();
+        let v: Vec<f32> = (0..width * height)
+            .map(|i| if i == at { 3.0 } else { 0.0 })
+            .collect();
         img.channels.insert(name.into(), Samples::F32(v));
     }
     for (scale, length) in [("1", 6), ("2.5", 15), ("0", 1)] {
         let ours = exrcomp_on(dir.path(), &img, "zip", &["vblur", "--scale", scale]);
-        let lit: Vec<usize> = (0..width * height).filter(|&i| ours.channels["R"].get_f32(i) != 0.0).collect();
+        let lit: Vec<usize> = (0..width * height)
+            .filter(|&i| ours.channels["R"].get_f32(i) != 0.0)
+            .collect();
         assert_eq!(lit, (at..at + length).collect::<Vec<_>>(), "scale {scale}");
         let sum: f32 = lit.iter().map(|&i| ours.channels["R"].get_f32(i)).sum();
-        assert!((sum - 3.0).abs() < 1e-5, "scale {scale}: the streak holds {sum}");
+        assert!(
+            (sum - 3.0).abs() < 1e-5,
+            "scale {scale}: the streak holds {sum}"
+        );
     }
 }
 
@@ -230,12 +295,28 @@ fn stereo_with_constant_depth_is_a_pure_shift_and_nearer_pixels_win() {
     let (width, height) = (30, 12);
     let img = scene(85, (2, -1, width, height), |_| 4.0, |_| (0.0, 0.0));
     // K / Z = 12 / 4: three columns right for the left eye.
-    let ours = exrcomp_on(d, &img, "zips", &["stereo", "--eye", "left", "--disparity", "12", "--strip-rows", "5"]);
+    let ours = exrcomp_on(
+        d,
+        &img,
+        "zips",
+        &[
+            "stereo",
+            "--eye",
+            "left",
+            "--disparity",
+            "12",
+            "--strip-rows",
+            "5",
+        ],
+    );
     for (name, samples) in &img.channels {
         for y in 0..height {
             for x in 0..width {
-                let from = if x >= 3 { x - 3 } else { 0 };
-                let (got, want) = (ours.channels[name].bits(y * width + x), samples.bits(y * width + from));
+                let from = x.saturating_sub(3);
+                let (got, want) = (
+                    ours.channels[name].bits(y * width + x),
+                    samples.bits(y * width + from),
+                );
                 assert_eq!(got, want, "{name} ({x}, {y})");
             }
         }
@@ -245,7 +326,12 @@ fn stereo_with_constant_depth_is_a_pure_shift_and_nearer_pixels_win() {
     let mut depths = vec![12.0f32; width * height];
     depths[20] = 1.0;
     let img = scene(86, (0, 0, width, height), |i| depths[i], |_| (0.0, 0.0));
-    let ours = exrcomp_on(d, &img, "zip", &["stereo", "--eye", "right", "--disparity", "12"]);
+    let ours = exrcomp_on(
+        d,
+        &img,
+        "zip",
+        &["stereo", "--eye", "right", "--disparity", "12"],
+    );
     assert_eq!(ours.channels["R"].bits(8), img.channels["R"].bits(20));
     assert_eq!(ours.channels["Z"].get_f32(8), 1.0);
     // Where the near pixel left (column 19 after the far ones' shift), the
@@ -261,10 +347,32 @@ fn missing_depth_or_vector_channels_name_the_channel() {
     let img = random_rgba(87, 0, 0, 8, 8, Kind::Half, false);
     write_image(&input, &img, compression("zip"), LineOrder::Increasing);
     for (args, channel) in [
-        (vec!["defocus", "--focus", "1", "--scale", "1", "--max-radius", "2"], "'Z'"),
+        (
+            vec![
+                "defocus",
+                "--focus",
+                "1",
+                "--scale",
+                "1",
+                "--max-radius",
+                "2",
+            ],
+            "'Z'",
+        ),
         (vec!["vblur", "--max-displacement", "3"], "'forward.u'"),
         (vec!["vblur"], "'forward.u'"),
-        (vec!["stereo", "--eye", "left", "--disparity", "3", "--z-channel", "depth"], "'depth'"),
+        (
+            vec![
+                "stereo",
+                "--eye",
+                "left",
+                "--disparity",
+                "3",
+                "--z-channel",
+                "depth",
+            ],
+            "'depth'",
+        ),
     ] {
         let out_path = d.join("out.exr");
         let mut command = vec![args[0], s(&input), "-o", s(&out_path)];

@@ -168,13 +168,66 @@ fn neighbourhood_ops_chain_with_merges_in_one_pass() {
         [[node]]\nname = \"eye\"\nop = \"stereo\"\neye = \"right\"\ndisparity = 30.0\ninputs = [\"soft\"]\n\n\
         [[node]]\nname = \"out\"\nwrite = \"unused.####.exr\"\ninputs = [\"eye\"]\n";
     std::fs::write(d.join("job.toml"), job).unwrap();
-    ok(&["run", s(&d.join("job.toml")), "-o", s(&p("comp")), "-q", "--strip-rows", "16"]);
-    assert!(!d.join("unused.0001.exr").exists(), "-o replaces the write node's file");
-    ok(&["defocus", s(&p("fg")), "-o", s(&p("s1")), "--focus", "5", "--scale", "4", "--max-radius", "3", "--aperture", "hexagon", "-q"]);
-    ok(&["vblur", s(&p("s1")), "-o", s(&p("s2")), "--scale", "0.5", "--max-displacement", "20", "-q"]);
+    ok(&[
+        "run",
+        s(&d.join("job.toml")),
+        "-o",
+        s(&p("comp")),
+        "-q",
+        "--strip-rows",
+        "16",
+    ]);
+    assert!(
+        !d.join("unused.0001.exr").exists(),
+        "-o replaces the write node's file"
+    );
+    ok(&[
+        "defocus",
+        s(&p("fg")),
+        "-o",
+        s(&p("s1")),
+        "--focus",
+        "5",
+        "--scale",
+        "4",
+        "--max-radius",
+        "3",
+        "--aperture",
+        "hexagon",
+        "-q",
+    ]);
+    ok(&[
+        "vblur",
+        s(&p("s1")),
+        "-o",
+        s(&p("s2")),
+        "--scale",
+        "0.5",
+        "--max-displacement",
+        "20",
+        "-q",
+    ]);
     ok(&["over", s(&p("s2")), s(&p("bg")), "-o", s(&p("s3")), "-q"]);
-    ok(&["blur", s(&p("s3")), "-o", s(&p("s4")), "--radius", "2", "-q"]);
-    ok(&["stereo", s(&p("s4")), "-o", s(&p("s5")), "--eye", "right", "--disparity", "30", "-q"]);
+    ok(&[
+        "blur",
+        s(&p("s3")),
+        "-o",
+        s(&p("s4")),
+        "--radius",
+        "2",
+        "-q",
+    ]);
+    ok(&[
+        "stereo",
+        s(&p("s4")),
+        "-o",
+        s(&p("s5")),
+        "--eye",
+        "right",
+        "--disparity",
+        "30",
+        "-q",
+    ]);
     for frame in 1..=2 {
         let name = |n: &str| d.join(format!("{n}.{frame:04}.exr"));
         assert_identical(&read_image(&name("comp")), &read_image(&name("s5")));

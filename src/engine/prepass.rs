@@ -38,14 +38,22 @@ pub fn max_over_rows(
             .map(|k| {
                 let block = file.decode_chunk(part, k)?;
                 let mut rows = [vec![0.0f32; width], vec![0.0f32; width]];
-                let line_bytes: usize = list.iter().map(|c| c.sample_type.bytes_per_sample()).sum::<usize>() * width;
+                let line_bytes: usize = list
+                    .iter()
+                    .map(|c| c.sample_type.bytes_per_sample())
+                    .sum::<usize>()
+                    * width;
                 let mut most = 0;
                 for line in block.data.chunks_exact(line_bytes.max(1)) {
                     let mut offset = 0;
                     for (c, channel) in list.iter().enumerate() {
                         let bytes = channel.sample_type.bytes_per_sample() * width;
                         if let Some(slot) = wanted.iter().position(|&w| w == c) {
-                            decode_row(channel.sample_type, &line[offset..offset + bytes], &mut rows[slot]);
+                            decode_row(
+                                channel.sample_type,
+                                &line[offset..offset + bytes],
+                                &mut rows[slot],
+                            );
                         }
                         offset += bytes;
                     }

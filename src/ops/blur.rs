@@ -33,17 +33,6 @@ pub fn weights(filter: Filter, radius: usize) -> Vec<f32> {
     raw.iter().map(|w| (w / sum) as f32).collect()
 }
 
-/// The channels a blur filters: the selected layers' R, G, B and A.
-fn filtered(layers: &Selection, channels: &[&[ChannelDescription]]) -> Vec<String> {
-    let list = channels[0];
-    layers
-        .resolve(channels)
-        .iter()
-        .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
-        .filter(|n| list.iter().any(|c| c.name.eq(n.as_str())))
-        .collect()
-}
-
 /// The horizontal pass: the filtered channels only, as f32.
 pub struct Horizontal {
     pub weights: Arc<Vec<f32>>,
@@ -59,7 +48,7 @@ pub struct Vertical {
 
 impl Op for Horizontal {
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        let names = filtered(&self.layers, inputs);
+        let names = self.layers.filtered(inputs[0]);
         inputs[0]
             .iter()
             .filter(|c| names.iter().any(|n| c.name.eq(n.as_str())))

@@ -7,6 +7,7 @@ use super::layers::Selection;
 use crate::engine::graph::Op;
 use crate::engine::strip::Rows;
 use exr::meta::attribute::ChannelDescription;
+use rayon::prelude::*;
 use std::f32::consts::PI;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,44 +46,37 @@ impl Aperture {
     }
 }
 
-/// Edge normals and apothem factor of a polygon aperture: a point d is
-/// inside radius r when d·n ≤ r cos(π/N) for every normal n.
-struct Shape {
-    aperture: Aperture,
-    normals: Vec<(f32, f32)>,
-    apothem: f32,
-}
-
-impl Shape {
-    fn new(aperture: Aperture) -> Self {
-        let (normals, apothem) = match aperture {
-            Aperture::Disc => (Vec::new(), 1.0),
-            Aperture::Polygon(n) => (
-                (0..n)
-                    .map(|k| {
-                        let angle = PI / 2.0 + 2.0 * PI * k as f32 / n as f32;
-                        (angle.cos(), angle.sin())
-                    })
-                    .collect(),
-                (PI / n as f32).cos(),
-            ),
-        };
-        Shape {
-            aperture,
-            normals,
-            apothem,
+/// The smallest aperture radius that reaches each offset (dx, dy) within
+/// `reach`: |d| for the disc; for the N-gon max_k (d · n_k) / cos(π/N), n_k
+/// its edge normals. Offset d is inside radius r exactly when need(d) ≤ r.
+fn need_table(aperture: Aperture, reach: i32) -> Vec<f32> {
+    let normals: Vec<(f32, f32)> = match aperture {
+        Aperture::Disc => Vec::new(),
+        Aperture::Polygon(n) => (0..n)
+            .map(|k| {
+                let angle = PI / 2.0 + 2.0 * PI * k as f32 / n as f32;
+                (angle.cos(), angle.sin())
+            })
+            .collect(),
+    };
+    let mut table = Vec::new();
+    for dy in -reach..=reach {
+        for dx in -reach..=reach {
+            let (dx, dy) = (dx as f32, dy as f32);
+            table.push(match aperture {
+                Aperture::Disc => (dx * dx + dy * dy).sqrt(),
+                Aperture::Polygon(n) => {
+                    let apothem = (PI / n as f32).cos();
+                    normals
+                        .iter()
+                        .map(|&(nx, ny)| dx * nx + dy * ny)
+                        .fold(f32::MIN, f32::max)
+                        / apothem
+                }
+            });
         }
     }
-
-    fn inside(&self, dx: f32, dy: f32, r: f32) -> bool {
-        match self.aperture {
-            Aperture::Disc => dx * dx + dy * dy <= r * r,
-            Aperture::Polygon(_) => self
-                .normals
-                .iter()
-                .all(|&(nx, ny)| dx * nx + dy * ny <= r * self.apothem),
-        }
-    }
+    table
 }
 
 pub struct Defocus {
@@ -117,22 +111,16 @@ impl Op for Defocus {
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
-        if !inputs[0].iter().any(|c| c.name.eq(self.z_channel.as_str())) {
-            return Err(format!("no depth channel '{}'", self.z_channel));
-        }
-        self.layers.check(inputs)
+        self.layers
+            .check_with(inputs[0], &[&self.z_channel], "depth")
     }
 
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let input = inputs[0];
-        let shape = Shape::new(self.aperture);
-        let layers = self.layers.resolve(&[input.channels.as_slice()]);
-        let names: Vec<String> = layers
-            .iter()
-            .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
-            .filter(|n| input.channel_index(n).is_some())
-            .collect();
+        let names = self.layers.filtered(&input.channels);
         let (w, r) = (input.width, self.max_radius as i32);
+        let side = 2 * r as usize + 1;
+        let need = need_table(self.aperture, r);
         let columns = out.valid_columns();
         // The input rows the output rows reach: their depth, radius, colours.
         let held = input.valid_rows();
@@ -150,48 +138,57 @@ impl Op for Defocus {
             }
         }
         let radius: Vec<f32> = depth.iter().map(|&d| self.coc(d)).collect();
-        let weight: Vec<f32> = radius.iter().map(|&r| 1.0 / self.aperture.area(r)).collect();
-        let mut sums = vec![0.0f32; names.len()];
-        let mut result = vec![vec![0.0f32; columns.len()]; names.len()];
-        for y in out.valid_rows() {
-            let py = (y - rows.start) as usize;
-            for (cx, x) in columns.clone().enumerate() {
-                let p = py * w + x;
-                let (zp, rp) = (depth[p], radius[p]);
-                sums.fill(0.0);
-                let mut total = 0.0f32;
-                let qy = (y - r).max(rows.start)..(y + r + 1).min(rows.end);
-                let qx = x.saturating_sub(r as usize).max(sources.start)
-                    ..(x + r as usize + 1).min(sources.end);
-                for yq in qy {
-                    let dy = (y - yq) as f32;
-                    let row = (yq - rows.start) as usize * w;
-                    for xq in qx.clone() {
-                        let q = row + xq;
-                        let dx = x as f32 - xq as f32;
-                        // q reaches p with its own aperture; a farther q only
-                        // within p's own blur (no background over sharp edges).
-                        if !shape.inside(dx, dy, radius[q])
-                            || (depth[q] > zp && !shape.inside(dx, dy, rp))
-                        {
-                            continue;
-                        }
-                        total += weight[q];
-                        for (sum, plane) in sums.iter_mut().zip(&values) {
-                            *sum += weight[q] * plane[q];
+        let weight: Vec<f32> = radius
+            .iter()
+            .map(|&r| 1.0 / self.aperture.area(r))
+            .collect();
+        // Output rows in parallel: per row, per filtered channel, the values.
+        let filtered: Vec<Vec<Vec<f32>>> = out
+            .valid_rows()
+            .into_par_iter()
+            .map(|y| {
+                let py = (y - rows.start) as usize;
+                let mut result = vec![vec![0.0f32; columns.len()]; names.len()];
+                let mut sums = vec![0.0f32; names.len()];
+                for (cx, x) in columns.clone().enumerate() {
+                    let p = py * w + x;
+                    let (zp, rp) = (depth[p], radius[p]);
+                    sums.fill(0.0);
+                    let mut total = 0.0f32;
+                    let qx = x.saturating_sub(r as usize).max(sources.start)
+                        ..(x + r as usize + 1).min(sources.end);
+                    for yq in (y - r).max(rows.start)..(y + r + 1).min(rows.end) {
+                        let row = (yq - rows.start) as usize * w;
+                        let offsets = (y - yq + r) as usize * side;
+                        for xq in qx.clone() {
+                            let (q, d) = (row + xq, need[offsets + x + r as usize - xq]);
+                            // q reaches p with its own aperture; a farther q only
+                            // within p's own blur (no background over sharp edges).
+                            if d > radius[q] || (depth[q] > zp && d > rp) {
+                                continue;
+                            }
+                            total += weight[q];
+                            for (sum, plane) in sums.iter_mut().zip(&values) {
+                                *sum += weight[q] * plane[q];
+                            }
                         }
                     }
+                    for (target, sum) in result.iter_mut().zip(&sums) {
+                        target[cx] = sum / total;
+                    }
                 }
-                for (target, sum) in result.iter_mut().zip(&sums) {
-                    target[cx] = sum / total;
-                }
-            }
+                result
+            })
+            .collect();
+        for (y, result) in out.valid_rows().zip(filtered) {
             let range = out.row_range(y);
             for (c, channel) in out.channels.iter().enumerate() {
                 let name = channel.name.to_string();
                 match names.iter().position(|n| *n == name) {
-                    Some(k) => out.planes[c]
-                        .write_f32(range.start + columns.start..range.start + columns.end, &result[k]),
+                    Some(k) => out.planes[c].write_f32(
+                        range.start + columns.start..range.start + columns.end,
+                        &result[k],
+                    ),
                     None => {
                         let s = input.channel_index(&name).expect("the input's channel");
                         out.planes[c]

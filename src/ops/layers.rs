@@ -129,6 +129,30 @@ impl Selection {
 }
 
 impl Selection {
+    /// The selected layers' R, G, B and A that `list` has: what a one-input
+    /// filter works on.
+    pub fn filtered(&self, list: &[ChannelDescription]) -> Vec<String> {
+        self.resolve(&[list])
+            .iter()
+            .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
+            .filter(|n| has(&[list], n))
+            .collect()
+    }
+
+    /// Like `check`, and also that `list` has each of `needed` (a depth or
+    /// vector channel), naming the first one missing as `what`.
+    pub fn check_with(
+        &self,
+        list: &[ChannelDescription],
+        needed: &[&str],
+        what: &str,
+    ) -> Result<(), String> {
+        if let Some(missing) = needed.iter().find(|n| !has(&[list], n)) {
+            return Err(format!("no {what} channel '{missing}'"));
+        }
+        self.check(&[list])
+    }
+
     /// An error naming the first selected layer that no input has, with the
     /// layers they do have.
     pub fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

@@ -24,7 +24,7 @@ impl Stereo {
     /// Columns a pixel at depth `z` moves: right for the left eye, left for
     /// the right eye; none where the depth is not a positive number.
     pub fn shift(&self, z: f32) -> i64 {
-        if !(z > 0.0) {
+        if z.is_nan() || z <= 0.0 {
             return 0;
         }
         let s = (self.disparity / z).round();

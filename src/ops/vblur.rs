@@ -23,26 +23,40 @@ impl VectorBlur {
     pub fn rows_reached(&self, du: &[f32], dv: &[f32]) -> usize {
         du.iter()
             .zip(dv)
-            .flat_map(|(&x, &y)| self.samples(x, y).map(|(_, oy)| oy.unsigned_abs() as usize))
+            .map(|(&x, &y)| Streak::new(self.scale * x, self.scale * y).rows())
             .max()
             .unwrap_or(0)
     }
+}
 
-    /// The pixel offsets a pixel moved by (dx, dy) spreads over: n =
-    /// max(1, round(length)) samples at t = k/n, k = 0..n, each rounded to
-    /// the nearest pixel and given 1/n of the value.
-    pub fn samples(&self, dx: f32, dy: f32) -> impl Iterator<Item = (i32, i32)> {
-        let (dx, dy) = (self.scale * dx, self.scale * dy);
+/// The pixels a pixel moved by (dx, dy) spreads over: n = max(1,
+/// round(length)) samples at t = k/n, k = 0..n, each rounded to the nearest
+/// pixel and given 1/n of the value.
+struct Streak {
+    dx: f32,
+    dy: f32,
+    n: usize,
+}
+
+impl Streak {
+    fn new(dx: f32, dy: f32) -> Self {
         let length = (dx * dx + dy * dy).sqrt();
         let n = if length.is_finite() {
             (length.round() as usize).max(1)
         } else {
             1
         };
-        (0..n).map(move |k| {
-            let t = k as f32 / n as f32;
-            ((t * dx).round() as i32, (t * dy).round() as i32)
-        })
+        Streak { dx, dy, n }
+    }
+
+    fn offset(&self, k: usize) -> (i32, i32) {
+        let t = k as f32 / self.n as f32;
+        ((t * self.dx).round() as i32, (t * self.dy).round() as i32)
+    }
+
+    /// Rows from the first sample to the farthest (the last: |t dy| grows with k).
+    fn rows(&self) -> usize {
+        self.offset(self.n - 1).1.unsigned_abs() as usize
     }
 }
 
@@ -56,22 +70,13 @@ impl Op for VectorBlur {
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
-        for name in &self.vectors {
-            if !inputs[0].iter().any(|c| c.name.eq(name.as_str())) {
-                return Err(format!("no displacement channel '{name}'"));
-            }
-        }
-        self.layers.check(inputs)
+        let [u, v] = &self.vectors;
+        self.layers.check_with(inputs[0], &[u, v], "displacement")
     }
 
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let input = inputs[0];
-        let layers = self.layers.resolve(&[input.channels.as_slice()]);
-        let names: Vec<String> = layers
-            .iter()
-            .flat_map(|l| l.colours().chain([l.alpha_channel()]).collect::<Vec<_>>())
-            .filter(|n| input.channel_index(n).is_some())
-            .collect();
+        let names = self.layers.filtered(&input.channels);
         let (w, reach) = (input.width, self.reach as i32);
         let columns = out.valid_columns();
         let held = input.valid_rows();
@@ -91,17 +96,27 @@ impl Op for VectorBlur {
                 input.planes[c].read_f32(input.row_range(y), row);
             }
             for x in input.valid_columns() {
-                let samples: Vec<(i32, i32)> = self.samples(du[x], dv[x]).collect();
-                if let Some(&(_, oy)) = samples.iter().find(|(_, oy)| oy.abs() > reach) {
+                if (du[x] == 0.0 && dv[x] == 0.0) || self.scale == 0.0 {
+                    // Still: the value stays where it is (the one sample, share 1).
+                    if out.valid_row(y) && y >= out.y && y < out.end() && columns.contains(&x) {
+                        let at = (y - out.y) as usize * w + x;
+                        for (sum, row) in sums.iter_mut().zip(&values) {
+                            sum[at] += row[x];
+                        }
+                    }
+                    continue;
+                }
+                let streak = Streak::new(self.scale * du[x], self.scale * dv[x]);
+                if streak.rows() > self.reach {
                     return Err(format!(
                         "pixel ({}, {y}) streaks {} rows, beyond the {reach} the blur reaches \
                          (raise --max-displacement, or leave it out to measure it)",
                         input.x + x as i32,
-                        oy.abs()
+                        streak.rows()
                     ));
                 }
-                let share = 1.0 / samples.len() as f32;
-                for (ox, oy) in samples {
+                let share = 1.0 / streak.n as f32;
+                for (ox, oy) in (0..streak.n).map(|k| streak.offset(k)) {
                     let (tx, ty) = (x as i32 + ox, y + oy);
                     if ty < out.y || ty >= out.end() || !out.valid_row(ty) {
                         continue;
