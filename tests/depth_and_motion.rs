@@ -288,6 +288,87 @@ fn a_moving_pixel_becomes_a_streak_of_length_scale_times_displacement() {
 
 // ---- stereo --------------------------------------------------------------
 
+/// specs/ops.md's stereo over the whole image: per row, each pixel moves by
+/// round(K / Z) (right for the left eye), the nearer (then the first) wins,
+/// and holes take the farther of the nearest moved pixels on either side.
+fn reference_stereo(img: &Img, disparity: f32, left: bool) -> Img {
+    let (w, h) = (img.width, img.height);
+    let mut out = img.clone();
+    for y in 0..h {
+        let z = |x: usize| img.channels["Z"].get_f32(y * w + x);
+        let mut source: Vec<Option<(usize, f32)>> = vec![None; w];
+        for x in 0..w {
+            let shift = if z(x) > 0.0 {
+                (disparity / z(x)).round() as i64
+            } else {
+                0
+            };
+            let to = x as i64 + if left { shift } else { -shift };
+            if to < 0 || to >= w as i64 {
+                continue;
+            }
+            if source[to as usize].is_none_or(|(_, d)| z(x) < d) {
+                source[to as usize] = Some((x, z(x)));
+            }
+        }
+        let moved = source.clone();
+        for (x, slot) in source.iter_mut().enumerate() {
+            if slot.is_none() {
+                let l = moved[..x].iter().rev().flatten().next();
+                let r = moved[x + 1..].iter().flatten().next();
+                *slot = match (l, r) {
+                    (Some(&l), Some(&r)) => Some(if r.1 > l.1 { r } else { l }),
+                    (l, r) => l.or(r).copied(),
+                };
+            }
+        }
+        for (name, samples) in out.channels.iter_mut() {
+            for x in 0..w {
+                let from = source[x].map_or(y * w + x, |(sx, _)| y * w + sx);
+                samples.copy_from(y * w + x, &img.channels[name], from);
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn stereo_equals_the_reference_for_random_depths_and_block_sizes() {
+    let dir = tempfile::tempdir().unwrap();
+    for (codec, window, eye) in [
+        ("zips", (-2, 3, 37, 11), "left"),
+        ("zip", (4, 0, 29, 20), "right"),
+        ("piz", (0, -6, 33, 40), "left"),
+    ] {
+        let mut rng = Lcg(window.2 as u64);
+        let depths: Vec<f32> = (0..window.2 * window.3)
+            .map(|_| {
+                if rng.next() < 0.1 {
+                    0.0
+                } else {
+                    1.0 + 9.0 * rng.next()
+                }
+            })
+            .collect();
+        let img = scene(88, window, |i| depths[i], |_| (0.0, 0.0));
+        let ours = exrcomp_on(
+            dir.path(),
+            &img,
+            codec,
+            &[
+                "stereo",
+                "--eye",
+                eye,
+                "--disparity",
+                "20",
+                "--strip-rows",
+                "3",
+            ],
+        );
+        assert_identical(&ours, &reference_stereo(&img, 20.0, eye == "left"));
+    }
+}
+
 #[test]
 fn stereo_with_constant_depth_is_a_pure_shift_and_nearer_pixels_win() {
     let dir = tempfile::tempdir().unwrap();

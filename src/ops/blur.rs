@@ -5,8 +5,9 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, Samples};
 use exr::meta::attribute::{ChannelDescription, SampleType};
+use rayon::prelude::*;
 use std::sync::Arc;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -66,33 +67,52 @@ impl Op for Horizontal {
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let input = inputs[0];
         let columns = out.valid_columns();
-        let radius = self.weights.len() / 2;
-        let mut row = vec![0.0f32; input.width];
-        // The row with `radius` clamped samples added on each side.
-        let mut padded = vec![0.0f32; columns.len() + 2 * radius];
-        let mut sums = vec![0.0f32; columns.len()];
         if columns.is_empty() {
             return Ok(());
         }
-        for y in out.valid_rows() {
-            for c in 0..out.channels.len() {
-                let name = out.channels[c].name.to_string();
-                let source = input.channel_index(&name).expect("a filtered channel");
-                input.planes[source].read_f32(input.row_range(y), &mut row);
-                let line = &row[columns.clone()];
-                let (first, last) = (line[0], line[line.len() - 1]);
-                padded[..radius].fill(first);
-                padded[radius..radius + line.len()].copy_from_slice(line);
-                padded[radius + line.len()..].fill(last);
-                for (x, sum) in sums.iter_mut().enumerate() {
-                    let mut acc = 0.0f32;
-                    for (w, v) in self.weights.iter().zip(&padded[x..]) {
-                        acc += w * v;
-                    }
-                    *sum = acc;
-                }
-                let range = out.row_range(y);
-                out.planes[c].write_f32(
+        let radius = self.weights.len() / 2;
+        let sources: Vec<usize> = out
+            .channels
+            .iter()
+            .map(|c| {
+                input
+                    .channel_index(&c.name.to_string())
+                    .expect("a filtered channel")
+            })
+            .collect();
+        let filtered: Vec<Vec<Vec<f32>>> = out
+            .valid_rows()
+            .into_par_iter()
+            .map(|y| {
+                let mut row = vec![0.0f32; input.width];
+                // The row with `radius` clamped samples added on each side.
+                let mut padded = vec![0.0f32; columns.len() + 2 * radius];
+                sources
+                    .iter()
+                    .map(|&source| {
+                        input.planes[source].read_f32(input.row_range(y), &mut row);
+                        let line = &row[columns.clone()];
+                        let (first, last) = (line[0], line[line.len() - 1]);
+                        padded[..radius].fill(first);
+                        padded[radius..radius + line.len()].copy_from_slice(line);
+                        padded[radius + line.len()..].fill(last);
+                        (0..line.len())
+                            .map(|x| {
+                                let mut acc = 0.0f32;
+                                for (w, v) in self.weights.iter().zip(&padded[x..]) {
+                                    acc += w * v;
+                                }
+                                acc
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect();
+        for (y, channels) in out.valid_rows().zip(filtered) {
+            let range = out.row_range(y);
+            for (plane, sums) in out.planes.iter_mut().zip(channels) {
+                plane.write_f32(
                     range.start + columns.start..range.start + columns.end,
                     &sums,
                 );
@@ -117,32 +137,60 @@ impl Op for Vertical {
         // The data window's rows (as far as they are held): the clamp's edges.
         let rows = blurred.valid_rows();
         let columns = out.valid_columns();
-        let mut sums = vec![0.0f32; columns.len()];
-        let mut row = vec![0.0f32; blurred.width];
-        for y in out.valid_rows() {
+        // Per output channel, the first pass's f32 plane, or none (copied).
+        let planes: Vec<Option<&[f32]>> = out
+            .channels
+            .iter()
+            .map(|c| {
+                blurred
+                    .channel_index(&c.name.to_string())
+                    .map(|i| match &blurred.planes[i] {
+                        Samples::F32(v) => v.as_slice(),
+                        _ => unreachable!("the first pass writes f32"),
+                    })
+            })
+            .collect();
+        let filtered: Vec<Vec<Option<Vec<f32>>>> = out
+            .valid_rows()
+            .into_par_iter()
+            .map(|y| {
+                planes
+                    .iter()
+                    .map(|plane| {
+                        let plane = (*plane)?;
+                        let mut sums = vec![0.0f32; columns.len()];
+                        for (k, w) in (-radius..=radius).zip(self.weights.iter()) {
+                            let from = blurred.row_range((y + k).clamp(rows.start, rows.end - 1));
+                            let source =
+                                &plane[from.start + columns.start..from.start + columns.end];
+                            for (sum, v) in sums.iter_mut().zip(source) {
+                                *sum += w * v;
+                            }
+                        }
+                        Some(sums)
+                    })
+                    .collect()
+            })
+            .collect();
+        for (y, channels) in out.valid_rows().zip(filtered) {
             let range = out.row_range(y);
-            let dst = range.start + columns.start..range.start + columns.end;
-            for c in 0..out.channels.len() {
-                let name = out.channels[c].name.to_string();
-                let Some(source) = blurred.channel_index(&name) else {
-                    let s = original
-                        .channel_index(&name)
-                        .expect("the original's channel");
-                    let bytes = original.planes[s].bytes(original.row_range(y));
-                    out.planes[c]
-                        .bytes_mut(range.clone())
-                        .copy_from_slice(bytes);
-                    continue;
-                };
-                sums.fill(0.0);
-                for (k, w) in (-radius..=radius).zip(self.weights.iter()) {
-                    let from = (y + k).clamp(rows.start, rows.end - 1);
-                    blurred.planes[source].read_f32(blurred.row_range(from), &mut row);
-                    for (sum, v) in sums.iter_mut().zip(&row[columns.clone()]) {
-                        *sum += w * v;
+            for (c, sums) in channels.into_iter().enumerate() {
+                match sums {
+                    Some(sums) => out.planes[c].write_f32(
+                        range.start + columns.start..range.start + columns.end,
+                        &sums,
+                    ),
+                    None => {
+                        let name = out.channels[c].name.to_string();
+                        let s = original
+                            .channel_index(&name)
+                            .expect("the original's channel");
+                        let bytes = original.planes[s].bytes(original.row_range(y));
+                        out.planes[c]
+                            .bytes_mut(range.clone())
+                            .copy_from_slice(bytes);
                     }
                 }
-                out.planes[c].write_f32(dst.clone(), &sums);
             }
         }
         Ok(())

@@ -122,7 +122,7 @@ impl Samples {
         }
     }
 
-    fn copy_from(&mut self, i: usize, other: &Samples, j: usize) {
+    pub fn copy_from(&mut self, i: usize, other: &Samples, j: usize) {
         match (self, other) {
             (Samples::F16(a), Samples::F16(b)) => a[i] = b[j],
             (Samples::F32(a), Samples::F32(b)) => a[i] = b[j],
