@@ -323,8 +323,8 @@ fn reference_stereo(img: &Img, disparity: f32, left: bool) -> Img {
             }
         }
         for (name, samples) in out.channels.iter_mut() {
-            for x in 0..w {
-                let from = source[x].map_or(y * w + x, |(sx, _)| y * w + sx);
+            for (x, slot) in source.iter().enumerate() {
+                let from = slot.map_or(y * w + x, |(sx, _)| y * w + sx);
                 samples.copy_from(y * w + x, &img.channels[name], from);
             }
         }
