@@ -117,6 +117,45 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Depth-aware merge: per pixel the nearer sample goes over the farther
+    /// (alpha 0 never in front); Z becomes the nearer depth.
+    Zmerge {
+        /// Two or more inputs; the last one's header and other channels are kept.
+        #[arg(required = true, num_args = 2..)]
+        inputs: Vec<String>,
+        #[arg(short, long)]
+        output: String,
+        #[arg(long, default_value = "Z")]
+        z_channel: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Differential rendering (Debevec): an object rendered into a plate
+    /// with the shadows and light it casts on a proxy of the real scene.
+    Diffrender {
+        /// I1: the object alone.
+        #[arg(long)]
+        object: String,
+        /// I2: the proxy of the scene, without the object.
+        #[arg(long)]
+        proxy: String,
+        /// I3: the proxy with the object's shadows (and light) on it.
+        #[arg(long)]
+        with_shadows: String,
+        /// P: the real plate; its header and other channels are kept.
+        #[arg(long)]
+        plate: String,
+        #[arg(short, long)]
+        output: String,
+        /// G in P - G (I4 - I3).
+        #[arg(long, default_value_t = 1.0)]
+        shadow_gain: f32,
+        /// Write I5 = (I1 over I2) - I3 instead, for grading.
+        #[arg(long)]
+        shadow_only: bool,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {

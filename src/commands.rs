@@ -15,11 +15,13 @@ use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::blur;
 use crate::ops::defocus::{Aperture, Defocus};
+use crate::ops::diffrender;
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
 use crate::ops::stereo::Stereo;
 use crate::ops::vblur::VectorBlur;
+use crate::ops::zmerge::ZMerge;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -128,6 +130,37 @@ pub fn run(command: Command) -> Result<()> {
                 run,
             };
             one_op(Box::new(op), one, "stereo")
+        }
+        Command::Zmerge {
+            inputs,
+            output,
+            z_channel,
+            run,
+        } => {
+            let n = inputs.len();
+            let op: Box<dyn Op> = Box::new(ZMerge { z_channel });
+            let graph = Graph::chain(n, vec![(op, (0..n).collect())]);
+            let layers = LayerArgs::default();
+            let (job, summary) = input_job(&inputs, &output, graph, n - 1, &layers, &run)?;
+            run_job(&job, "zmerge", &run, summary)
+        }
+        Command::Diffrender {
+            object,
+            proxy,
+            with_shadows,
+            plate,
+            output,
+            shadow_gain,
+            shadow_only,
+            run,
+        } => {
+            let mut ops = Vec::new();
+            diffrender::push_steps(&mut ops, 4, [0, 1, 2, 3], shadow_gain, shadow_only);
+            let graph = Graph::chain(4, ops);
+            let inputs = [object, proxy, with_shadows, plate];
+            let layers = LayerArgs::default();
+            let (job, summary) = input_job(&inputs, &output, graph, 3, &layers, &run)?;
+            run_job(&job, "diffrender", &run, summary)
         }
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),

@@ -6,11 +6,13 @@ use crate::engine::graph::{Graph, Op};
 use crate::error::{Error, Result};
 use crate::ops::blur::{self, Filter};
 use crate::ops::defocus::{Aperture, Defocus};
+use crate::ops::diffrender;
 use crate::ops::layers::Selection;
 use crate::ops::merge::{push_stack, Merge, MergeOp};
 use crate::ops::premult::Premult;
 use crate::ops::stereo::{Eye, Stereo};
 use crate::ops::vblur::VectorBlur;
+use crate::ops::zmerge::ZMerge;
 use clap::ValueEnum;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
@@ -59,6 +61,8 @@ struct NodeSpec {
     max_displacement: Option<u32>,
     eye: Option<Spanned<String>>,
     disparity: Option<f32>,
+    shadow_gain: Option<f32>,
+    shadow_only: Option<bool>,
 }
 
 /// A job file turned into what the engine runs.
@@ -258,6 +262,21 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
             Recipe::Stack(make) => {
                 push_stack(&mut graph_ops, reads.len(), &args, || located(make()))
             }
+            Recipe::Diffrender(gain, shadow_only) => {
+                let [object, proxy, shadowed, plate] = args[..] else {
+                    unreachable!("checked: four inputs")
+                };
+                let mut steps = Vec::new();
+                let base = reads.len() + graph_ops.len();
+                diffrender::push_steps(
+                    &mut steps,
+                    base,
+                    [object, proxy, shadowed, plate],
+                    gain,
+                    shadow_only,
+                );
+                graph_ops.extend(steps.into_iter().map(|(op, inputs)| (located(op), inputs)));
+            }
             Recipe::Blur(filter, radius, layers) => {
                 let next = reads.len() + graph_ops.len();
                 for (op, inputs) in blur::passes(filter, radius, &layers, args[0], next) {
@@ -339,6 +358,8 @@ enum Recipe {
     Stack(Make),
     /// The two passes of a blur.
     Blur(Filter, usize, Selection),
+    /// Differential rendering's merges and shadow steps: gain, shadow only.
+    Diffrender(f32, bool),
 }
 
 /// Op node `node`'s recipe, given its input count, every parameter checked.
@@ -494,6 +515,22 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     z_channel: z_channel.clone(),
                 }) as Box<dyn Op>
             }))
+        }
+        "zmerge" => {
+            want(2..=usize::MAX, "two or more inputs")?;
+            let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
+            Recipe::One(Box::new(move || {
+                Box::new(ZMerge {
+                    z_channel: z_channel.clone(),
+                }) as Box<dyn Op>
+            }))
+        }
+        "diffrender" => {
+            want(4..=4, "four inputs (object, proxy, with_shadows, plate)")?;
+            Recipe::Diffrender(
+                spec.shadow_gain.unwrap_or(1.0),
+                spec.shadow_only.unwrap_or(false),
+            )
         }
         other => return at.error(op.span(), format!("unknown op '{other}'")),
     })

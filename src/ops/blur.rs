@@ -96,15 +96,15 @@ impl Op for Horizontal {
                         padded[..radius].fill(first);
                         padded[radius..radius + line.len()].copy_from_slice(line);
                         padded[radius + line.len()..].fill(last);
-                        (0..line.len())
-                            .map(|x| {
-                                let mut acc = 0.0f32;
-                                for (w, v) in self.weights.iter().zip(&padded[x..]) {
-                                    acc += w * v;
-                                }
-                                acc
-                            })
-                            .collect()
+                        // Tap by tap across the row (vectorises), each pixel's
+                        // sum still taken from k = -R upwards.
+                        let mut sums = vec![0.0f32; line.len()];
+                        for (k, w) in self.weights.iter().enumerate() {
+                            for (sum, v) in sums.iter_mut().zip(&padded[k..]) {
+                                *sum += w * v;
+                            }
+                        }
+                        sums
                     })
                     .collect()
             })

@@ -2,8 +2,10 @@
 
 pub mod blur;
 pub mod defocus;
+pub mod diffrender;
 pub mod layers;
 pub mod merge;
 pub mod premult;
 pub mod stereo;
 pub mod vblur;
+pub mod zmerge;
