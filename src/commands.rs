@@ -534,7 +534,14 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         json: false,
         ..run.clone()
     };
-    for (name, kind) in [("fg", PlateKind::Fg), ("bg", PlateKind::Bg)] {
+    let kinds = [
+        ("fg", PlateKind::Fg),
+        ("bg", PlateKind::Bg),
+        ("object", PlateKind::Object),
+        ("proxy", PlateKind::Proxy),
+        ("shadowed", PlateKind::Shadowed),
+    ];
+    for (name, kind) in kinds {
         let plate = Plate {
             kind,
             width,
@@ -567,12 +574,6 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
             );
         }
     }
-    if !plates.quiet {
-        eprintln!(
-            "one pass into {}: fg motion-blurred by its forward.u/v, over bg defocused by its Z",
-            pattern("comp")
-        );
-    }
     let run = RunArgs {
         frames: Some(format!("{first}-{}", first + length as i64 - 1)),
         ..run.clone()
@@ -604,6 +605,35 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         )
     };
     let inputs = [pattern("fg"), pattern("bg")];
+    // Differential rendering: the ball and its shadow, rendered on a proxy
+    // ground, put into the bg plate.
+    let mut ops = Vec::new();
+    diffrender::push_steps(&mut ops, 4, [0, 1, 2, 3], 1.0, false);
+    let shot = [pattern("object"), pattern("proxy"), pattern("shadowed"), pattern("bg")];
+    let (job, summary) = input_job(
+        &shot,
+        &pattern("diffrender"),
+        Graph::chain(4, ops),
+        3,
+        &LayerArgs::default(),
+        &RunArgs {
+            quiet: plates.quiet,
+            ..run.clone()
+        },
+    )?;
+    if !plates.quiet {
+        eprintln!(
+            "differential rendering into {}: object over the plate with the shadow it casts on the proxy",
+            pattern("diffrender")
+        );
+    }
+    run_job(&job, "diffrender", &plates, summary)?;
+    if !plates.quiet {
+        eprintln!(
+            "one pass into {}: fg motion-blurred by its forward.u/v, over bg defocused by its Z",
+            pattern("comp")
+        );
+    }
     let (mut job, summary) = input_job(
         &inputs,
         &pattern("comp"),

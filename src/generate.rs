@@ -13,6 +13,13 @@ pub enum PlateKind {
     /// A soft-edged disc moving across a transparent frame; premultiplied
     /// RGBA, Z and screen-space motion vectors (forward.u, forward.v).
     Fg,
+    /// Differential rendering's object alone: a shaded ball above the middle
+    /// of a transparent frame; RGBA and Z.
+    Object,
+    /// The proxy scene without the object: an opaque grey ground; RGBA, Z.
+    Proxy,
+    /// The object over the proxy with the ball's soft shadow on the ground.
+    Shadowed,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -41,6 +48,37 @@ impl Plate {
         let w = self.width as f32;
         let phase = frame as f32 * 0.2;
         (w * 0.5 + w * 0.3 * phase.sin(), w * 0.3 * 0.2 * phase.cos())
+    }
+}
+
+impl Plate {
+    /// A pixel of the differential-rendering scene (no grain: renders), as
+    /// [A, B, G, R, Z, u, v].
+    fn scene(&self, kind: PlateKind, fx: f32, fy: f32) -> [f32; 7] {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let (cx, cy, r) = (w * 0.5, h * 0.4, h * 0.15);
+        let d = ((fx - cx).powi(2) + (fy - cy).powi(2)).sqrt();
+        let a = 1.0 - smoothstep(r - 1.5, r, d);
+        let lit = (0.55 + 0.45 * (cy - fy) / r).clamp(0.2, 1.0);
+        let ball = [a, a * 0.2 * lit, a * 0.35 * lit, a * 0.8 * lit, 5.0, 0.0, 0.0];
+        let grey = 0.35 + 0.15 * fy / h;
+        // The shadow: a soft ellipse on the ground below the ball.
+        let (ex, ey) = ((fx - cx) / (r * 1.3), (fy - (cy + r * 1.6)) / (r * 0.35));
+        let shade = 1.0 - 0.65 * (1.0 - smoothstep(0.5, 1.0, (ex * ex + ey * ey).sqrt()));
+        let ground = |s: f32| [1.0, grey * s, grey * s, grey * s, 10.0, 0.0, 0.0];
+        match kind {
+            PlateKind::Object => ball,
+            PlateKind::Proxy => ground(1.0),
+            _ => {
+                let g = ground(shade);
+                let mut px = ball;
+                for c in 0..4 {
+                    px[c] = ball[c] + (1.0 - a) * g[c];
+                }
+                px[4] = if a > 0.0 { 5.0 } else { 10.0 };
+                px
+            }
+        }
     }
 }
 
@@ -115,6 +153,9 @@ impl Op for Plate {
                             0.0,
                             0.0,
                         ]
+                    }
+                    PlateKind::Object | PlateKind::Proxy | PlateKind::Shadowed => {
+                        self.scene(self.kind, fx, fy)
                     }
                     PlateKind::Fg => {
                         let d = ((fx - cx).powi(2) + (fy - cy).powi(2)).sqrt();
