@@ -609,7 +609,12 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
     // ground, put into the bg plate.
     let mut ops = Vec::new();
     diffrender::push_steps(&mut ops, 4, [0, 1, 2, 3], 1.0, false);
-    let shot = [pattern("object"), pattern("proxy"), pattern("shadowed"), pattern("bg")];
+    let shot = [
+        pattern("object"),
+        pattern("proxy"),
+        pattern("shadowed"),
+        pattern("bg"),
+    ];
     let (job, summary) = input_job(
         &shot,
         &pattern("diffrender"),

@@ -60,7 +60,15 @@ impl Plate {
         let d = ((fx - cx).powi(2) + (fy - cy).powi(2)).sqrt();
         let a = 1.0 - smoothstep(r - 1.5, r, d);
         let lit = (0.55 + 0.45 * (cy - fy) / r).clamp(0.2, 1.0);
-        let ball = [a, a * 0.2 * lit, a * 0.35 * lit, a * 0.8 * lit, 5.0, 0.0, 0.0];
+        let ball = [
+            a,
+            a * 0.2 * lit,
+            a * 0.35 * lit,
+            a * 0.8 * lit,
+            5.0,
+            0.0,
+            0.0,
+        ];
         let grey = 0.35 + 0.15 * fy / h;
         // The shadow: a soft ellipse on the ground below the ball.
         let (ex, ey) = ((fx - cx) / (r * 1.3), (fy - (cy + r * 1.6)) / (r * 0.35));
