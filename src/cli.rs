@@ -156,6 +156,74 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Colour-difference keyer: alpha from how far the screen channel rises
+    /// above the other two, the screen taken out of the colour.
+    Key {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        /// green, blue, or the screen's colour as R,G,B.
+        #[arg(long, default_value = "green", value_parser = parse_screen)]
+        screen: [f32; 3],
+        /// Scales the difference: above 1 more transparent.
+        #[arg(long, default_value_t = 1.0)]
+        gain: f32,
+        /// Weight of the first other channel against the second (0..1).
+        #[arg(long, default_value_t = 0.5)]
+        balance: f32,
+        /// Alpha at or below this becomes 0.
+        #[arg(long, default_value_t = 0.0)]
+        clip_black: f32,
+        /// Alpha at or above this becomes 1.
+        #[arg(long, default_value_t = 1.0)]
+        clip_white: f32,
+        /// Limit the screen channel to the other two (spill suppression).
+        #[arg(long)]
+        despill: bool,
+        /// 1 - alpha.
+        #[arg(long)]
+        invert: bool,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Difference matte: alpha from the difference with a clean plate.
+    Diffmatte {
+        input: String,
+        #[arg(long)]
+        clean_plate: String,
+        #[arg(short, long)]
+        output: String,
+        /// Differences up to this are background (alpha 0).
+        #[arg(long, default_value_t = 0.05)]
+        threshold: f32,
+        /// Alpha reaches 1 at threshold + softness.
+        #[arg(long, default_value_t = 0.1)]
+        softness: f32,
+        #[arg(long)]
+        invert: bool,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Triangulation matting: one foreground over two known backgrounds gives
+    /// alpha and colour exactly.
+    Triangulate {
+        #[arg(long)]
+        over_a: String,
+        #[arg(long)]
+        bg_a: String,
+        #[arg(long)]
+        over_b: String,
+        #[arg(long)]
+        bg_b: String,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Shrink a matte: the smallest alpha within a disc of the radius.
+    Erode(Morph),
+    /// Grow a matte: the largest alpha within a disc of the radius.
+    Dilate(Morph),
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
@@ -230,6 +298,18 @@ pub struct Composite {
     pub run: RunArgs,
 }
 
+/// Erode and dilate.
+#[derive(Args)]
+pub struct Morph {
+    #[command(flatten)]
+    pub one: OneInput,
+    #[arg(long, value_parser = clap::value_parser!(u32).range(0..=1024))]
+    pub radius: u32,
+    /// 1 - alpha afterwards.
+    #[arg(long)]
+    pub invert: bool,
+}
+
 /// An operation on one input.
 #[derive(Args)]
 pub struct OneInput {
@@ -297,6 +377,28 @@ pub struct RunArgs {
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
     pub strip_rows: Option<usize>,
+}
+
+/// A screen colour: `green`, `blue` or R,G,B.
+pub fn parse_screen(text: &str) -> Result<[f32; 3], String> {
+    match text.to_ascii_lowercase().as_str() {
+        "green" => return Ok([0.0, 1.0, 0.0]),
+        "blue" => return Ok([0.0, 0.0, 1.0]),
+        _ => {}
+    }
+    let values: Vec<f32> = text
+        .split(',')
+        .map(|v| {
+            v.trim()
+                .parse::<f32>()
+                .map_err(|_| "expected green, blue or R,G,B".to_string())
+        })
+        .collect::<Result<_, _>>()?;
+    match values[..] {
+        [r, g, b] if r.max(g).max(b) > r.min(g).min(b) => Ok([r, g, b]),
+        [_, _, _] => Err("a screen colour needs one channel above the others".into()),
+        _ => Err("expected green, blue or R,G,B".into()),
+    }
 }
 
 fn parse_pair(text: &str) -> Result<(String, String), String> {

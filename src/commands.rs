@@ -1,6 +1,6 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, Composite, LayerArgs, OneInput, RunArgs};
+use crate::cli::{Command, Composite, LayerArgs, Morph, OneInput, RunArgs};
 use crate::engine::graph::{Graph, Op};
 use crate::engine::interrupt;
 use crate::engine::pipeline;
@@ -17,7 +17,9 @@ use crate::ops::blur;
 use crate::ops::defocus::{Aperture, Defocus};
 use crate::ops::diffrender;
 use crate::ops::layers::Selection;
+use crate::ops::matte::{DiffMatte, Key, Matte, Pull};
 use crate::ops::merge::{push_stack, Merge, MergeOp};
+use crate::ops::morphology::Morphology;
 use crate::ops::premult::Premult;
 use crate::ops::stereo::Stereo;
 use crate::ops::vblur::VectorBlur;
@@ -162,6 +164,76 @@ pub fn run(command: Command) -> Result<()> {
             let (job, summary) = input_job(&inputs, &output, graph, 3, &layers, &run)?;
             run_job(&job, "diffrender", &run, summary)
         }
+        Command::Key {
+            input,
+            output,
+            screen,
+            gain,
+            balance,
+            clip_black,
+            clip_white,
+            despill,
+            invert,
+            run,
+        } => {
+            if clip_white <= clip_black {
+                return Err(Error::usage("--clip-white must be above --clip-black"));
+            }
+            let key = Key {
+                screen,
+                gain,
+                balance,
+                clip: (clip_black, clip_white),
+                despill,
+                invert,
+            };
+            let op: Box<dyn Op> = Box::new(Matte(Pull::Key(key)));
+            let one = OneInput {
+                input,
+                output,
+                layers: LayerArgs::default(),
+                run,
+            };
+            one_op(op, one, "key")
+        }
+        Command::Diffmatte {
+            input,
+            clean_plate,
+            output,
+            threshold,
+            softness,
+            invert,
+            run,
+        } => {
+            let matte = DiffMatte {
+                threshold,
+                softness,
+                invert,
+            };
+            let op: Box<dyn Op> = Box::new(Matte(Pull::Difference(matte)));
+            let graph = Graph::chain(2, vec![(op, vec![0, 1])]);
+            let layers = LayerArgs::default();
+            let (job, summary) =
+                input_job(&[input, clean_plate], &output, graph, 0, &layers, &run)?;
+            run_job(&job, "diffmatte", &run, summary)
+        }
+        Command::Triangulate {
+            over_a,
+            bg_a,
+            over_b,
+            bg_b,
+            output,
+            run,
+        } => {
+            let op: Box<dyn Op> = Box::new(Matte(Pull::Triangulation));
+            let graph = Graph::chain(4, vec![(op, vec![0, 1, 2, 3])]);
+            let layers = LayerArgs::default();
+            let inputs = [over_a, bg_a, over_b, bg_b];
+            let (job, summary) = input_job(&inputs, &output, graph, 0, &layers, &run)?;
+            run_job(&job, "triangulate", &run, summary)
+        }
+        Command::Erode(morph) => morphology(false, morph),
+        Command::Dilate(morph) => morphology(true, morph),
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
         Command::Run { job, output, run } => {
@@ -263,6 +335,16 @@ fn premult(inverse: bool, args: OneInput) -> Result<()> {
         layers: selection(&args.layers),
     });
     one_op(op, args, if inverse { "unpremult" } else { "premult" })
+}
+
+fn morphology(dilate: bool, morph: Morph) -> Result<()> {
+    let op: Box<dyn Op> = Box::new(Morphology {
+        radius: morph.radius as usize,
+        dilate,
+        invert: morph.invert,
+        layers: selection(&morph.one.layers),
+    });
+    one_op(op, morph.one, if dilate { "dilate" } else { "erode" })
 }
 
 /// A job of one operation on one input.

@@ -2,13 +2,16 @@
 //! nodes, checked with errors that name the file's line, then built into one
 //! streaming `Graph`. The format: specs/job-format.md.
 
+use crate::cli::parse_screen;
 use crate::engine::graph::{Graph, Op};
 use crate::error::{Error, Result};
 use crate::ops::blur::{self, Filter};
 use crate::ops::defocus::{Aperture, Defocus};
 use crate::ops::diffrender;
 use crate::ops::layers::Selection;
+use crate::ops::matte::{DiffMatte, Key, Matte, Pull};
 use crate::ops::merge::{push_stack, Merge, MergeOp};
+use crate::ops::morphology::Morphology;
 use crate::ops::premult::Premult;
 use crate::ops::stereo::{Eye, Stereo};
 use crate::ops::vblur::VectorBlur;
@@ -63,6 +66,15 @@ struct NodeSpec {
     disparity: Option<f32>,
     shadow_gain: Option<f32>,
     shadow_only: Option<bool>,
+    screen: Option<Spanned<String>>,
+    gain: Option<f32>,
+    balance: Option<f32>,
+    clip_black: Option<f32>,
+    clip_white: Option<f32>,
+    despill: Option<bool>,
+    invert: Option<bool>,
+    threshold: Option<f32>,
+    softness: Option<f32>,
 }
 
 /// A job file turned into what the engine runs.
@@ -513,6 +525,69 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     eye,
                     disparity,
                     z_channel: z_channel.clone(),
+                }) as Box<dyn Op>
+            }))
+        }
+        "key" => {
+            want(1..=1, "one input")?;
+            let screen = match &spec.screen {
+                None => [0.0, 1.0, 0.0],
+                Some(text) => parse_screen(text.get_ref()).or_else(|m| at.error(text.span(), m))?,
+            };
+            let clip = (
+                spec.clip_black.unwrap_or(0.0),
+                spec.clip_white.unwrap_or(1.0),
+            );
+            if clip.1 <= clip.0 {
+                return at.error(node.span(), "clip_white must be above clip_black");
+            }
+            let (gain, balance) = (spec.gain.unwrap_or(1.0), spec.balance.unwrap_or(0.5));
+            let (despill, invert) = (spec.despill.unwrap_or(false), spec.invert.unwrap_or(false));
+            Recipe::One(Box::new(move || {
+                Box::new(Matte(Pull::Key(Key {
+                    screen,
+                    gain,
+                    balance,
+                    clip,
+                    despill,
+                    invert,
+                }))) as Box<dyn Op>
+            }))
+        }
+        "diffmatte" => {
+            want(2..=2, "two inputs (footage, clean plate)")?;
+            let (threshold, softness) =
+                (spec.threshold.unwrap_or(0.05), spec.softness.unwrap_or(0.1));
+            let invert = spec.invert.unwrap_or(false);
+            Recipe::One(Box::new(move || {
+                Box::new(Matte(Pull::Difference(DiffMatte {
+                    threshold,
+                    softness,
+                    invert,
+                }))) as Box<dyn Op>
+            }))
+        }
+        "triangulate" => {
+            want(
+                4..=4,
+                "four inputs (over A, background A, over B, background B)",
+            )?;
+            Recipe::One(Box::new(|| {
+                Box::new(Matte(Pull::Triangulation)) as Box<dyn Op>
+            }))
+        }
+        "erode" | "dilate" => {
+            want(1..=1, "one input")?;
+            let Some(radius) = spec.radius else {
+                return at.error(node.span(), format!("op '{}' needs a radius", op.get_ref()));
+            };
+            let (dilate, invert) = (op.get_ref() == "dilate", spec.invert.unwrap_or(false));
+            Recipe::One(Box::new(move || {
+                Box::new(Morphology {
+                    radius: radius as usize,
+                    dilate,
+                    invert,
+                    layers: layers.clone(),
                 }) as Box<dyn Op>
             }))
         }

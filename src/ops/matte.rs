@@ -1,0 +1,201 @@
+//! Pulling mattes from footage: a colour-difference keyer, a difference
+//! matte against a clean plate, and triangulation matting from two known
+//! backgrounds. Pointwise; each writes premultiplied R, G, B, A.
+//! Formulas: specs/ops.md, "Matting".
+
+use crate::engine::graph::Op;
+use crate::engine::strip::Rows;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
+
+const RGB: [&str; 3] = ["R", "G", "B"];
+
+/// Backgrounds closer than this (squared RGB distance) tell nothing apart.
+pub const TRIANGULATION_EPSILON: f32 = 1e-4;
+
+pub struct Key {
+    /// The screen's colour.
+    pub screen: [f32; 3],
+    pub gain: f32,
+    /// Weight of the first of the two other channels in what the screen
+    /// channel is compared with (0.5: their mean).
+    pub balance: f32,
+    pub clip: (f32, f32),
+    pub despill: bool,
+    pub invert: bool,
+}
+
+impl Key {
+    /// The screen's channel: the largest of the screen colour's.
+    fn channel(&self) -> usize {
+        (0..3).fold(0, |best, c| {
+            if self.screen[c] > self.screen[best] {
+                c
+            } else {
+                best
+            }
+        })
+    }
+
+    /// How much the screen channel of `c` exceeds the balanced other two.
+    fn excess(&self, c: [f32; 3]) -> f32 {
+        let s = self.channel();
+        let (o1, o2) = ((s + 1) % 3, (s + 2) % 3);
+        c[s] - (self.balance * c[o1] + (1.0 - self.balance) * c[o2])
+    }
+
+    /// Premultiplied colour and alpha of one pixel.
+    pub fn pixel(&self, c: [f32; 3]) -> ([f32; 3], f32) {
+        let raw = 1.0 - self.gain * self.excess(c) / self.excess(self.screen);
+        let (black, white) = self.clip;
+        let mut alpha = ((raw - black) / (white - black)).clamp(0.0, 1.0);
+        if self.invert {
+            alpha = 1.0 - alpha;
+        }
+        // Take away what the screen adds where it shows through.
+        let mut out: [f32; 3] = std::array::from_fn(|k| c[k] - (1.0 - alpha) * self.screen[k]);
+        if self.despill {
+            let s = self.channel();
+            let limit = out[s] - self.excess(out).max(0.0);
+            out[s] = limit;
+        }
+        (out, alpha)
+    }
+}
+
+pub struct DiffMatte {
+    pub threshold: f32,
+    pub softness: f32,
+    pub invert: bool,
+}
+
+impl DiffMatte {
+    /// Alpha from the largest channel difference d with the clean plate: 0
+    /// up to the threshold, 1 from threshold + softness, smooth between.
+    pub fn alpha(&self, c: [f32; 3], plate: [f32; 3]) -> f32 {
+        let d = (0..3)
+            .map(|k| (c[k] - plate[k]).abs())
+            .fold(0.0f32, f32::max);
+        let alpha = if self.softness <= 0.0 {
+            if d > self.threshold {
+                1.0
+            } else {
+                0.0
+            }
+        } else {
+            let t = ((d - self.threshold) / self.softness).clamp(0.0, 1.0);
+            t * t * (3.0 - 2.0 * t)
+        };
+        if self.invert {
+            1.0 - alpha
+        } else {
+            alpha
+        }
+    }
+}
+
+/// Triangulation matting (Smith and Blinn): the same foreground over two
+/// known backgrounds. With F premultiplied, C_a = F + (1 - α) B_a and
+/// C_b = F + (1 - α) B_b, so 1 - α = (C_a - C_b)·(B_a - B_b) / |B_a - B_b|²
+/// (least squares over R, G, B) and F = C_a - (1 - α) B_a.
+pub fn triangulate(ca: [f32; 3], ba: [f32; 3], cb: [f32; 3], bb: [f32; 3]) -> ([f32; 3], f32) {
+    let db: [f32; 3] = std::array::from_fn(|k| ba[k] - bb[k]);
+    let norm: f32 = db.iter().map(|d| d * d).sum();
+    if norm < TRIANGULATION_EPSILON {
+        // No contrast between the backgrounds: taken as opaque foreground.
+        return (std::array::from_fn(|k| 0.5 * (ca[k] + cb[k])), 1.0);
+    }
+    let dot: f32 = (0..3).map(|k| (ca[k] - cb[k]) * db[k]).sum();
+    let alpha = (1.0 - dot / norm).clamp(0.0, 1.0);
+    (
+        std::array::from_fn(|k| ca[k] - (1.0 - alpha) * ba[k]),
+        alpha,
+    )
+}
+
+/// Which matte an op pulls.
+pub enum Pull {
+    /// Input: the footage.
+    Key(Key),
+    /// Inputs: the footage, the clean plate.
+    Difference(DiffMatte),
+    /// Inputs: foreground over A, background A, over B, background B.
+    Triangulation,
+}
+
+pub struct Matte(pub Pull);
+
+fn rgb(rows: &Rows, y: i32, columns: &std::ops::Range<usize>, out: &mut [Vec<f32>; 3]) {
+    for (k, name) in RGB.iter().enumerate() {
+        out[k].resize(rows.width, 0.0);
+        match rows.channel_index(name) {
+            Some(c) => rows.planes[c].read_f32(rows.row_range(y), &mut out[k]),
+            None => out[k].fill(0.0),
+        }
+        out[k].truncate(columns.end);
+    }
+}
+
+impl Op for Matte {
+    /// The footage's channels with R, G, B, A (float where it adds them).
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        let mut out = inputs[0].to_vec();
+        for name in RGB.iter().chain(&["A"]) {
+            if !out.iter().any(|c| c.name.eq(*name)) {
+                out.push(ChannelDescription::named(*name, SampleType::F32));
+            }
+        }
+        out.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
+        out
+    }
+
+    /// The footage's window: a matte is pulled where there is footage.
+    fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+        inputs[0]
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+        let columns = out.valid_columns();
+        let mut colours: Vec<[Vec<f32>; 3]> = vec![Default::default(); inputs.len()];
+        let mut result: [Vec<f32>; 4] = Default::default();
+        for y in out.valid_rows() {
+            for (rows, buffer) in inputs.iter().zip(colours.iter_mut()) {
+                rgb(rows, y, &columns, buffer);
+            }
+            for r in result.iter_mut() {
+                r.clear();
+            }
+            for x in columns.clone() {
+                let at = |i: usize| -> [f32; 3] { std::array::from_fn(|k| colours[i][k][x]) };
+                let (c, a) = match &self.0 {
+                    Pull::Key(key) => key.pixel(at(0)),
+                    Pull::Difference(matte) => {
+                        let a = matte.alpha(at(0), at(1));
+                        (at(0).map(|v| v * a), a)
+                    }
+                    Pull::Triangulation => triangulate(at(0), at(1), at(2), at(3)),
+                };
+                for k in 0..3 {
+                    result[k].push(c[k]);
+                }
+                result[3].push(a);
+            }
+            let range = out.row_range(y);
+            let dst = range.start + columns.start..range.start + columns.end;
+            for (c, channel) in out.channels.iter().enumerate() {
+                let name = channel.name.to_string();
+                match RGB.iter().chain(&["A"]).position(|n| *n == name) {
+                    Some(k) => out.planes[c].write_f32(dst.clone(), &result[k]),
+                    None => {
+                        let s = inputs[0]
+                            .channel_index(&name)
+                            .expect("the footage's channel");
+                        out.planes[c]
+                            .bytes_mut(range.clone())
+                            .copy_from_slice(inputs[0].planes[s].bytes(inputs[0].row_range(y)));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
