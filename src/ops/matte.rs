@@ -140,7 +140,7 @@ impl Op for Matte {
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         let mut out = inputs[0].to_vec();
         for name in RGB.iter().chain(&["A"]) {
-            if !out.iter().any(|c| c.name.eq(*name)) {
+            if !out.iter().any(|c| c.name.eq(name)) {
                 out.push(ChannelDescription::named(*name, SampleType::F32));
             }
         }
