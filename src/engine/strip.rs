@@ -175,6 +175,17 @@ impl Rows {
         start..self.end().min(self.valid.end().y()).max(start)
     }
 
+    /// Copies absolute row `y` of every plane from `other`, which has the
+    /// same channels and columns.
+    pub fn copy_row_from(&mut self, other: &Rows, y: i32) {
+        let range = self.row_range(y);
+        for (plane, source) in self.planes.iter_mut().zip(&other.planes) {
+            plane
+                .bytes_mut(range.clone())
+                .copy_from_slice(source.bytes(other.row_range(y)));
+        }
+    }
+
     /// Whether absolute row `y` is inside the valid window.
     pub fn valid_row(&self, y: i32) -> bool {
         y >= self.valid.position.y() && y < self.valid.end().y()

@@ -58,12 +58,7 @@ impl Op for Morphology {
             .filter_map(|l| input.channel_index(&l.alpha_channel()))
             .collect();
         for y in out.valid_rows() {
-            let range = out.row_range(y);
-            for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
-                plane
-                    .bytes_mut(range.clone())
-                    .copy_from_slice(source.bytes(input.row_range(y)));
-            }
+            out.copy_row_from(input, y);
         }
         for &a in &alphas {
             let rows: Vec<Vec<f32>> = held

@@ -40,11 +40,7 @@ impl Op for Premult {
         for y in out.valid_rows() {
             let range = out.row_range(y);
             // Every channel as it is, then the selected colours recomputed.
-            for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
-                plane
-                    .bytes_mut(range.clone())
-                    .copy_from_slice(source.bytes(input.row_range(y)));
-            }
+            out.copy_row_from(input, y);
             for layer in &layers {
                 layer.read_alpha(input, y, &mut alpha);
                 for name in layer.colours() {
