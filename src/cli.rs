@@ -224,6 +224,25 @@ pub enum Command {
     Erode(Morph),
     /// Grow a matte: the largest alpha within a disc of the radius.
     Dilate(Morph),
+    /// Flatten a deep file: each pixel's samples composited front to back
+    /// (any command reading a deep scanline input flattens it the same way).
+    Flatten {
+        input: String,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Merge deep files by depth, sample by sample, then flatten.
+    Deepmerge {
+        /// Two or more deep files or sequences; the first one's header is kept.
+        #[arg(required = true, num_args = 2..)]
+        inputs: Vec<String>,
+        #[arg(short, long)]
+        output: String,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {

@@ -263,6 +263,23 @@ pub fn run(command: Command) -> Result<()> {
             }
             run_job(&job, "run", &run, summary)
         }
+        Command::Flatten { input, output, run } => {
+            let graph = Graph::chain(1, Vec::new());
+            let layers = LayerArgs::default();
+            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
+            run_job(&job, "flatten", &run, summary)
+        }
+        Command::Deepmerge {
+            inputs,
+            output,
+            run,
+        } => {
+            let graph = Graph::chain(1, Vec::new());
+            let layers = LayerArgs::default();
+            let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
+            job.merged[0] = inputs[1..].iter().map(|p| FramePattern::parse(p)).collect();
+            run_job(&job, "deepmerge", &run, summary)
+        }
         Command::Transcode { input, output, run } => {
             let graph = Graph::chain(1, Vec::new());
             let (job, summary) =
@@ -407,6 +424,7 @@ fn input_job(
     }
     let resolved = resolve(&inputs, &frames, run.missing)?;
     let job = Job {
+        merged: vec![Vec::new(); inputs.len()],
         inputs,
         parts,
         view: layers.view.clone(),
@@ -443,6 +461,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
     let display = plate.display_window();
     Ok(Job {
         inputs: Vec::new(),
+        merged: Vec::new(),
         parts: Vec::new(),
         view: None,
         output,

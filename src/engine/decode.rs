@@ -2,6 +2,7 @@
 //! chunks are decompressed in parallel, each exactly once, and their mapped
 //! pages are released as soon as the rows are copied out.
 
+use super::deep_input::DeepInput;
 use super::strip::Rows;
 use crate::error::Result;
 use crate::io::reader::ExrFile;
@@ -26,6 +27,8 @@ pub struct InputCursor {
     /// folios, fault-around), so pages of chunks released earlier come back
     /// when neighbouring chunks are read. Releasing unmapped pages is cheap.
     released: Option<Range<usize>>,
+    /// Set for a deep input: strips come from flattening its samples.
+    deep: Option<Arc<DeepInput>>,
 }
 
 impl InputCursor {
@@ -38,6 +41,15 @@ impl InputCursor {
             carried: None,
             done: 0,
             released: None,
+            deep: None,
+        }
+    }
+
+    /// A cursor that flattens a deep input (and reads nothing flat).
+    pub fn deep(file: Arc<ExrFile>, part: usize, deep: Arc<DeepInput>) -> Self {
+        InputCursor {
+            deep: Some(deep),
+            ..Self::new(file, part, IntegerBounds::zero())
         }
     }
 
@@ -134,6 +146,11 @@ pub fn decode_strip(
             input.file.release_bytes(span.clone());
             input.released = Some(span);
             input.done = done;
+        }
+    }
+    for (strip, input) in strips.iter_mut().zip(inputs.iter()) {
+        if let Some(deep) = &input.deep {
+            *strip = deep.strip(columns, rows.clone())?;
         }
     }
     Ok(strips)

@@ -2,6 +2,7 @@
 
 pub mod compose;
 pub mod decode;
+pub mod deep_input;
 pub mod encode;
 pub mod graph;
 pub mod interrupt;

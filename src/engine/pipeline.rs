@@ -119,7 +119,10 @@ fn decode_frame(
         .inputs
         .iter()
         .enumerate()
-        .map(|(i, file)| InputCursor::new(file.clone(), plan.parts[i], plan.windows[i]))
+        .map(|(i, file)| match &plan.deep[i] {
+            Some(deep) => InputCursor::deep(file.clone(), plan.parts[i], deep.clone()),
+            None => InputCursor::new(file.clone(), plan.parts[i], plan.windows[i]),
+        })
         .collect();
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());

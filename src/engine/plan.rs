@@ -1,6 +1,7 @@
 //! What one frame of a job needs: its open inputs, each node's channels and
 //! data window, the output header, and the strip height.
 
+use super::deep_input::DeepInput;
 use super::graph::{Graph, Node};
 use crate::error::{Error, Kind, Result};
 use crate::io::parts::choose_part;
@@ -25,6 +26,9 @@ pub struct Job {
     pub parts: Vec<Option<String>>,
     /// The view asked for: picks the part of that view in multi-part files.
     pub view: Option<String>,
+    /// Per input, more deep files whose samples merge with its own before
+    /// they are flattened (`deepmerge`); empty for most.
+    pub merged: Vec<Vec<FramePattern>>,
     pub output: FramePattern,
     /// Per output frame, where each input comes from.
     pub frames: Vec<FrameSources>,
@@ -89,6 +93,8 @@ pub struct FramePlan {
     pub inputs: Vec<Arc<ExrFile>>,
     /// Per input, the part read.
     pub parts: Vec<usize>,
+    /// Per deep input, what flattens it as it is read.
+    pub deep: Vec<Option<Arc<DeepInput>>>,
     pub header: Header,
     /// Per node: channels and data window.
     pub channels: Vec<Vec<ChannelDescription>>,
@@ -135,15 +141,22 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         })
         .collect::<Result<_>>()?;
     let header_of = |i: usize| inputs[i].header(parts[i]);
+    let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
+        .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
+        .collect::<Result<_>>()?;
     // A black input has no data anywhere: an empty data window.
-    let input_window = |i: usize| match sources.inputs[i] {
-        Source::Frame(_) => header_of(i).data_window(),
-        Source::Black(_) => IntegerBounds::zero(),
+    let input_window = |i: usize| match (sources.inputs[i], &deep[i]) {
+        (Source::Black(_), _) => IntegerBounds::zero(),
+        (_, Some(deep)) => deep.window,
+        _ => header_of(i).data_window(),
     };
 
     let graph: &Graph = &job.graph;
     let channels = graph.evaluate(
-        |i| header_of(i).channels.list.to_vec(),
+        |i| match &deep[i] {
+            Some(deep) => deep.channels.clone(),
+            None => header_of(i).channels.list.to_vec(),
+        },
         |op, args| {
             let lists: Vec<&[ChannelDescription]> = args.iter().map(Vec::as_slice).collect();
             op.channels(&lists)
@@ -185,6 +198,9 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let mut output_channels = channels[graph.output()].clone();
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
+    header.deep = false;
+    header.deep_data_version = None;
+    header.max_samples_per_pixel = None;
     header.own_attributes.software_name =
         Some(Text::from(concat!("exrcomp ", env!("CARGO_PKG_VERSION"))));
     if let Some(compression) = job.compression {
@@ -210,6 +226,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         output: job.output.path(frame),
         inputs,
         parts,
+        deep,
         header,
         channels,
         windows,
@@ -217,11 +234,47 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     })
 }
 
-/// What the engine reads today: flat scanlines, no subsampling.
+/// Input `i`'s flattening, if it is deep: its own file and those merged
+/// with it (the same frame), each checked.
+fn deep_input(
+    job: &Job,
+    i: usize,
+    sources: &FrameSources,
+    file: &Arc<ExrFile>,
+    part: usize,
+) -> Result<Option<Arc<DeepInput>>> {
+    let merged = job.merged.get(i).map_or(&[][..], Vec::as_slice);
+    if matches!(sources.inputs[i], Source::Black(_)) {
+        return Ok(None);
+    }
+    if !file.header(part).deep {
+        if let Some(other) = merged.first() {
+            return Err(file.error(format!(
+                "is not deep, so it cannot be deep-merged with {}",
+                other.display()
+            )));
+        }
+        return Ok(None);
+    }
+    let at = sources.inputs[i].file_frame();
+    let mut files = vec![(file.clone(), part)];
+    for pattern in merged {
+        let other = Arc::new(ExrFile::open(&pattern.path(at), job.frame_label(at))?);
+        let part = choose_part(&other, None, job.view.as_deref())?;
+        check_readable(&other, part)?;
+        if !other.header(part).deep {
+            return Err(other.error("is not deep: deepmerge takes deep files only"));
+        }
+        files.push((other, part));
+    }
+    Ok(Some(Arc::new(DeepInput::new(files))))
+}
+
+/// What the engine reads: flat or deep scanlines, no subsampling.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
-    if header.deep {
-        return Err(file.error("deep data cannot be composited (flatten it first)"));
+    if header.deep && matches!(header.blocks, BlockDescription::Tiles(_)) {
+        return Err(file.error("deep tiled files are not supported: only deep scanlines"));
     }
     if let BlockDescription::Tiles(_) = header.blocks {
         return Err(file.error("tiled files are not supported yet: convert to scanlines first"));

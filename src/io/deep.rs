@@ -1,10 +1,11 @@
-//! Checks a deep scanline chunk without interpreting its samples: the pixel
-//! offset table must unpack to one count per pixel, never decreasing, and the
-//! sample data must unpack to exactly what those counts add up to.
+//! Deep scanline chunks: a structure check (the pixel offset table must
+//! unpack to one count per pixel, never decreasing, and the sample data to
+//! exactly what those counts add up to), and decoding into samples.
 
 use super::reader::MAX_BLOCK_BYTES;
 use super::zip;
 use exr::block::chunk::CompressedDeepScanLineBlock;
+use exr::meta::attribute::SampleType;
 use exr::meta::header::Header;
 use exr::prelude::Compression;
 
@@ -102,4 +103,80 @@ fn unpack_rle(packed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
         ));
     }
     Ok(zip::untransform(&mut out))
+}
+
+/// The samples of one deep scanline chunk.
+pub struct DeepBlock {
+    /// First line (absolute y) and number of lines.
+    pub y: i32,
+    pub lines: usize,
+    /// Per pixel of the block (line by line, the data window's width), the
+    /// index of its first sample; one more entry ends the last pixel.
+    pub starts: Vec<usize>,
+    /// Per channel of the header, every sample of the block, as f32.
+    pub channels: Vec<Vec<f32>>,
+}
+
+impl DeepBlock {
+    pub fn samples(&self, pixel: usize) -> std::ops::Range<usize> {
+        self.starts[pixel]..self.starts[pixel + 1]
+    }
+}
+
+/// Decodes a deep scanline chunk (after `check_deep_scanline`'s checks,
+/// which it repeats): the sample data holds, channel after channel, every
+/// sample of the block in pixel order.
+pub fn decode_deep_scanline(
+    header: &Header,
+    block: &CompressedDeepScanLineBlock,
+) -> Result<DeepBlock, String> {
+    check_deep_scanline(header, block)?;
+    let window = header.data_window();
+    let width = window.size.width();
+    let lines = (header.compression.scan_lines_per_block() as i64)
+        .min(window.end().y() as i64 - block.y_coordinate as i64) as usize;
+    let table = unpack(
+        header.compression,
+        bytemuck::cast_slice(&block.compressed_pixel_offset_table),
+        width * lines * 4,
+    )?;
+    let mut starts = vec![0usize];
+    starts.extend(
+        table
+            .chunks_exact(4)
+            .map(|b| i32::from_le_bytes(b.try_into().expect("4 bytes")) as usize),
+    );
+    let total = *starts.last().expect("one entry at least");
+    let data = unpack(
+        header.compression,
+        &block.compressed_sample_data_le,
+        block.decompressed_sample_data_size,
+    )?;
+    let mut channels = Vec::new();
+    let mut offset = 0;
+    for channel in header.channels.list.iter() {
+        let size = channel.sample_type.bytes_per_sample();
+        let bytes = &data[offset..offset + total * size];
+        channels.push(match channel.sample_type {
+            SampleType::F16 => bytes
+                .chunks_exact(2)
+                .map(|b| half::f16::from_le_bytes([b[0], b[1]]).to_f32())
+                .collect(),
+            SampleType::F32 => bytes
+                .chunks_exact(4)
+                .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+                .collect(),
+            SampleType::U32 => bytes
+                .chunks_exact(4)
+                .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f32)
+                .collect(),
+        });
+        offset += total * size;
+    }
+    Ok(DeepBlock {
+        y: block.y_coordinate,
+        lines,
+        starts,
+        channels,
+    })
 }
