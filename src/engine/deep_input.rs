@@ -34,6 +34,13 @@ pub struct DeepInput {
     pub window: IntegerBounds,
 }
 
+/// Where, among one file's channels, each output channel, Z and A are.
+struct ChannelMap {
+    channels: Vec<Option<usize>>,
+    z: Option<usize>,
+    alpha: Option<usize>,
+}
+
 /// One file's decoded blocks for a strip: lines per block, the first
 /// block's index, and them.
 struct Blocks {
@@ -82,16 +89,17 @@ impl DeepInput {
                 .iter()
                 .position(|c| c.name.eq(name))
         };
-        let maps: Vec<(Vec<Option<usize>>, Option<usize>, Option<usize>)> = self
+        let maps: Vec<ChannelMap> = self
             .files
             .iter()
-            .map(|(f, p)| {
-                let channels = self
+            .map(|(f, p)| ChannelMap {
+                channels: self
                     .channels
                     .iter()
                     .map(|c| index(f, *p, &c.name.to_string()))
-                    .collect();
-                (channels, index(f, *p, "Z"), index(f, *p, "A"))
+                    .collect(),
+                z: index(f, *p, "Z"),
+                alpha: index(f, *p, "A"),
             })
             .collect();
         let is = |c: &ChannelDescription, n: &str| c.name.eq(n);
@@ -114,10 +122,10 @@ impl DeepInput {
                         continue;
                     };
                     let block = &blocks.blocks[b];
-                    let (_, z, a) = &maps[f];
+                    let map = &maps[f];
                     for s in block.samples(pixel) {
-                        let depth = z.map_or(0.0, |z| block.channels[z][s]);
-                        let alpha = a.map_or(1.0, |a| block.channels[a][s]);
+                        let depth = map.z.map_or(0.0, |z| block.channels[z][s]);
+                        let alpha = map.alpha.map_or(1.0, |a| block.channels[a][s]);
                         samples.push((depth, alpha, f, b, s));
                     }
                 }
@@ -133,7 +141,7 @@ impl DeepInput {
                         if Some(c) == alpha_out || Some(c) == z_out {
                             continue;
                         }
-                        if let Some(k) = maps[f].0[c] {
+                        if let Some(k) = maps[f].channels[c] {
                             out[i] += (1.0 - coverage) * block.channels[k][s];
                         }
                     }
