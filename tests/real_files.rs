@@ -127,18 +127,9 @@ fn two_frames_of_the_beachball_sequence_composite_like_the_reference() {
 fn tiled_inputs_are_refused_with_a_reason() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.exr");
-    let images = shared_images();
-    for (input, reason) in [("Tiles/GoldenGate.exr", "tiled")] {
-        let path = images.join(input);
-        let result = run(&[
-            "over",
-            path.to_str().unwrap(),
-            path.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-        ]);
-        assert_eq!(result.status.code(), Some(3));
-        assert!(stderr(&result).contains(reason), "{}", stderr(&result));
-        assert!(!out.exists());
-    }
+    let path = shared_images().join("Tiles/GoldenGate.exr");
+    let result = run(&["over", s(&path), s(&path), "-o", s(&out)]);
+    assert_eq!(result.status.code(), Some(3));
+    assert!(stderr(&result).contains("tiled"), "{}", stderr(&result));
+    assert!(!out.exists());
 }
