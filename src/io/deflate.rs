@@ -11,7 +11,6 @@
 //! otherwise libdeflate compresses the whole block. One stream either way, so
 //! any zlib decoder reads it.
 
-use isal_sys::igzip_lib as isal;
 use libdeflater::{CompressionLvl, Compressor};
 use std::cell::RefCell;
 
@@ -53,10 +52,18 @@ fn bound(len: usize) -> usize {
     len + 5 * (len / 65535 + 2) + 2 * 328 + 16
 }
 
+/// Without ISA-L: never taken, libdeflate compresses whole blocks.
+#[cfg(not(feature = "isal"))]
+fn igzip_first_blocks(_: &[u8], _: &mut Vec<u8>) -> Option<usize> {
+    None
+}
+
 /// Appends `data` as non-final deflate blocks ending byte-aligned (igzip's
 /// full flush), so further blocks can follow; the size written, or `None`
 /// (with `out` unchanged in length) if igzip refused.
+#[cfg(feature = "isal")]
 fn igzip_first_blocks(data: &[u8], out: &mut Vec<u8>) -> Option<usize> {
+    use isal_sys::igzip_lib as isal;
     if data.is_empty() || u32::try_from(bound(data.len())).is_err() {
         return None;
     }
@@ -160,6 +167,7 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "isal")]
     #[test]
     fn noise_goes_through_igzip_and_smooth_data_does_not() {
         let mut noisy_start = Vec::new();
