@@ -243,6 +243,11 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Write a farm job that runs a command over frame chunks.
+    Farm {
+        #[command(subcommand)]
+        farm: Farm,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
@@ -315,6 +320,26 @@ pub struct Composite {
     pub layers: LayerArgs,
     #[command(flatten)]
     pub run: RunArgs,
+}
+
+#[derive(Subcommand)]
+pub enum Farm {
+    /// An Open Job Description job template (`openjd check`, `openjd run`,
+    /// AWS Deadline Cloud): one task per chunk, each `--frames CHUNK --resume`.
+    Openjd {
+        /// All the frames, as --frames takes them.
+        #[arg(long)]
+        frames: String,
+        /// Frames per task.
+        #[arg(long, default_value_t = 10)]
+        chunk: usize,
+        /// Where the template is written (YAML).
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The exrcomp command to run, without --frames (after `--`).
+        #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
+        command: Vec<String>,
+    },
 }
 
 /// Erode and dilate.

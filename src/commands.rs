@@ -1,6 +1,6 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, Composite, LayerArgs, Morph, OneInput, RunArgs};
+use crate::cli::{Command, Composite, Farm, LayerArgs, Morph, OneInput, RunArgs};
 use crate::engine::graph::{Graph, Op};
 use crate::engine::interrupt;
 use crate::engine::pipeline;
@@ -9,6 +9,7 @@ use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job};
 use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
+use crate::farm;
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
@@ -236,6 +237,25 @@ pub fn run(command: Command) -> Result<()> {
         Command::Dilate(morph) => morphology(true, morph),
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
+        Command::Farm {
+            farm:
+                Farm::Openjd {
+                    frames,
+                    chunk,
+                    output,
+                    command,
+                },
+        } => {
+            let cwd = std::env::current_dir()
+                .map_err(|e| Error::usage(format!("no working folder: {e}")))?;
+            let args = farm::absolute_args(&command, &cwd)?;
+            let template = farm::openjd_template(
+                &farm::this_exrcomp()?,
+                &args,
+                &farm::chunks(&frames, chunk)?,
+            );
+            farm::write_template(&output, &template)
+        }
         Command::Run { job, output, run } => {
             let mut plan = crate::job::load(&job)?;
             if let Some(output) = output {

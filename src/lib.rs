@@ -4,6 +4,7 @@ pub mod cli;
 pub mod commands;
 pub mod engine;
 pub mod error;
+pub mod farm;
 pub mod generate;
 pub mod guard;
 pub mod info;
