@@ -340,6 +340,22 @@ pub enum Farm {
         #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
         command: Vec<String>,
     },
+    /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
+    /// layer; see the README for submitting it.
+    Opencue {
+        /// The frame range, A-B or A-B:STEP.
+        #[arg(long)]
+        frames: String,
+        /// Frames per OpenCue frame chunk.
+        #[arg(long, default_value_t = 10)]
+        chunk: usize,
+        /// Where the outline is written (JSON).
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The exrcomp command to run, without --frames (after `--`).
+        #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
+        command: Vec<String>,
+    },
 }
 
 /// Erode and dilate.

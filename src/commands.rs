@@ -239,6 +239,19 @@ pub fn run(command: Command) -> Result<()> {
         Command::Unpremult(args) => premult(true, args),
         Command::Farm {
             farm:
+                Farm::Opencue {
+                    frames,
+                    chunk,
+                    output,
+                    command,
+                },
+        } => {
+            let args = farm::absolute_args(&command, &working_folder()?)?;
+            let outline = farm::opencue_outline(&farm::this_exrcomp()?, &args, &frames, chunk)?;
+            farm::write_template(&output, &outline)
+        }
+        Command::Farm {
+            farm:
                 Farm::Openjd {
                     frames,
                     chunk,
@@ -246,9 +259,7 @@ pub fn run(command: Command) -> Result<()> {
                     command,
                 },
         } => {
-            let cwd = std::env::current_dir()
-                .map_err(|e| Error::usage(format!("no working folder: {e}")))?;
-            let args = farm::absolute_args(&command, &cwd)?;
+            let args = farm::absolute_args(&command, &working_folder()?)?;
             let template = farm::openjd_template(
                 &farm::this_exrcomp()?,
                 &args,
@@ -382,6 +393,10 @@ fn morphology(dilate: bool, morph: Morph) -> Result<()> {
         layers: selection(&morph.one.layers),
     });
     one_op(op, morph.one, if dilate { "dilate" } else { "erode" })
+}
+
+fn working_folder() -> Result<PathBuf> {
+    std::env::current_dir().map_err(|e| Error::usage(format!("no working folder: {e}")))
 }
 
 /// A job of one operation on one input.

@@ -1,6 +1,7 @@
-//! Farm job templates: a local command split into frame chunks, each task
-//! running exrcomp with `--frames CHUNK --resume`, so a retried task redoes
-//! only the frames it has not finished. Open Job Description for now.
+//! Farm jobs: a local command split into frame chunks, each task running
+//! exrcomp with `--frames CHUNK --resume`, so a retried task redoes only the
+//! frames it has not finished. Open Job Description templates and OpenCue
+//! outlines.
 
 use crate::error::{Error, Result};
 use crate::io::sequence::{format_frame_list, parse_frame_list};
@@ -91,6 +92,58 @@ pub fn write_template(path: &Path, text: &str) -> Result<()> {
             let _ = std::fs::remove_file(&temporary);
             Error::output(path, None, format!("cannot write the template: {e}"))
         })
+}
+
+/// An OpenCue outline in the JSON form PyOutline loads
+/// (`outline.loader.load_json`): one Shell layer over the frame range,
+/// chunked, each frame chunk running `--frames #FRAME_START#-#FRAME_END#`.
+/// OpenCue ranges are `A-B` or `A-BxS`: other frame lists are refused.
+pub fn opencue_outline(
+    exrcomp: &Path,
+    command: &[String],
+    frames: &str,
+    chunk: usize,
+) -> Result<String> {
+    if chunk == 0 {
+        return Err(Error::usage("--chunk must be at least 1"));
+    }
+    let (range, step) = match frames.split_once(':') {
+        Some((range, step)) => (range, Some(step)),
+        None => (frames, None),
+    };
+    let contiguous = range
+        .split_once('-')
+        .is_some_and(|(a, b)| a.parse::<i64>().is_ok() && b.parse::<i64>().is_ok());
+    if !contiguous || range.contains(',') {
+        return Err(Error::usage("OpenCue takes frame ranges A-B or A-B:STEP"));
+    }
+    let (cue_range, chunk_frames) = match step {
+        Some(step) => (
+            format!("{range}x{step}"),
+            format!("#FRAME_START#-#FRAME_END#:{step}"),
+        ),
+        None => (range.to_string(), "#FRAME_START#-#FRAME_END#".to_string()),
+    };
+    let mut args = vec![exrcomp.to_string_lossy().into_owned()];
+    args.extend(command.iter().cloned());
+    args.extend([
+        "--frames".to_string(),
+        chunk_frames,
+        "--resume".into(),
+        "--quiet".into(),
+    ]);
+    let name = format!("exrcomp-{}", command.first().map_or("job", String::as_str));
+    let outline = serde_json::json!({
+        "name": name,
+        "range": cue_range,
+        "layers": [{
+            "name": "exrcomp",
+            "module": "outline.modules.shell.Shell",
+            "command": args,
+            "chunk": chunk,
+        }],
+    });
+    Ok(serde_json::to_string_pretty(&outline).expect("JSON values serialise") + "\n")
 }
 
 /// This executable, for the template's command.

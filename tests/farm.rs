@@ -146,3 +146,112 @@ fn frames_belong_to_the_farm_command_not_the_task() {
         stderr(&out)
     );
 }
+
+/// Python with OpenCue's PyOutline, or `None` (skip; a failure under
+/// EXRCOMP_REQUIRE_PEERS=1).
+fn pyoutline() -> Option<std::path::PathBuf> {
+    let python = peer("python3")?;
+    let found = Command::new(&python)
+        .args(["-c", "import outline.backend.cue"])
+        .status()
+        .is_ok_and(|s| s.success());
+    if !found && std::env::var("EXRCOMP_REQUIRE_PEERS").as_deref() == Ok("1") {
+        panic!(
+            "PyOutline (pip install opencue-pyoutline packaging) is required but not importable"
+        );
+    }
+    found.then_some(python)
+}
+
+#[test]
+fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
+    let Some(python) = pyoutline() else {
+        eprintln!("SKIPPED: PyOutline is not installed");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
+        generate(
+            &d.join(format!("{name}.####.exr")),
+            kind,
+            (64, 48),
+            &["--frames", "1-7"],
+        );
+    }
+    let p = |n: &str| d.join(n);
+    let (fg, bg, out, job) = (
+        p("fg.####.exr"),
+        p("bg.####.exr"),
+        p("cue/comp.####.exr"),
+        p("job.json"),
+    );
+    let mut args = vec![
+        "farm",
+        "opencue",
+        "--frames",
+        "1-7",
+        "--chunk",
+        "3",
+        "-o",
+        s(&job),
+        "--",
+    ];
+    args.extend(["over", s(&fg), s(&bg), "-o", s(&out)]);
+    ok(&args);
+    // OpenCue's own library loads the outline and writes the job spec cuebot takes.
+    let script = "import sys, outline.loader, outline.cuerun\n\
+        from outline.backend import cue\n\
+        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
+        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
+    let out = Command::new(python)
+        .args(["-c", script])
+        .arg(p("job.json"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let spec = String::from_utf8_lossy(&out.stdout).into_owned();
+    for part in [
+        "<range>1-7</range>",
+        "<chunk>3</chunk>",
+        "--frames #FRAME_START#-#FRAME_END# --resume",
+    ] {
+        assert!(spec.contains(part), "{part} not in\n{spec}");
+    }
+    // Each OpenCue frame chunk, its tokens replaced as RQD does, equals the local run.
+    let cmd = spec
+        .split("<cmd>")
+        .nth(1)
+        .and_then(|c| c.split("</cmd>").next())
+        .unwrap()
+        .to_string();
+    for (start, end) in [(1, 3), (4, 6), (7, 7)] {
+        let line = cmd
+            .replace("#FRAME_START#", &start.to_string())
+            .replace("#FRAME_END#", &end.to_string());
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let status = Command::new(words[0]).args(&words[1..]).status().unwrap();
+        assert!(status.success(), "{line}");
+    }
+    ok(&[
+        "over",
+        s(&p("fg.####.exr")),
+        s(&p("bg.####.exr")),
+        "-o",
+        s(&p("local/comp.####.exr")),
+        "--frames",
+        "1-7",
+        "-q",
+    ]);
+    for frame in 1..=7 {
+        let name = format!("comp.{frame:04}.exr");
+        assert_eq!(
+            std::fs::read(p("cue").join(&name)).unwrap(),
+            std::fs::read(p("local").join(&name)).unwrap()
+        );
+    }
+}
