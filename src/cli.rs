@@ -326,36 +326,27 @@ pub struct Composite {
 pub enum Farm {
     /// An Open Job Description job template (`openjd check`, `openjd run`,
     /// AWS Deadline Cloud): one task per chunk, each `--frames CHUNK --resume`.
-    Openjd {
-        /// All the frames, as --frames takes them.
-        #[arg(long)]
-        frames: String,
-        /// Frames per task.
-        #[arg(long, default_value_t = 10)]
-        chunk: usize,
-        /// Where the template is written (YAML).
-        #[arg(short, long)]
-        output: PathBuf,
-        /// The exrcomp command to run, without --frames (after `--`).
-        #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
-        command: Vec<String>,
-    },
+    Openjd(FarmJob),
     /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
-    /// layer; see the README for submitting it.
-    Opencue {
-        /// The frame range, A-B or A-B:STEP.
-        #[arg(long)]
-        frames: String,
-        /// Frames per OpenCue frame chunk.
-        #[arg(long, default_value_t = 10)]
-        chunk: usize,
-        /// Where the outline is written (JSON).
-        #[arg(short, long)]
-        output: PathBuf,
-        /// The exrcomp command to run, without --frames (after `--`).
-        #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
-        command: Vec<String>,
-    },
+    /// layer (frames A-B or A-B:STEP); see the README for submitting it.
+    Opencue(FarmJob),
+}
+
+/// A local command to run on a farm, in frame chunks.
+#[derive(Args)]
+pub struct FarmJob {
+    /// All the frames, as --frames takes them.
+    #[arg(long)]
+    pub frames: String,
+    /// Frames per task.
+    #[arg(long, default_value_t = 10)]
+    pub chunk: usize,
+    /// Where the job is written.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// The exrcomp command to run, without --frames (after `--`).
+    #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
+    pub command: Vec<String>,
 }
 
 /// Erode and dilate.

@@ -237,35 +237,17 @@ pub fn run(command: Command) -> Result<()> {
         Command::Dilate(morph) => morphology(true, morph),
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
-        Command::Farm {
-            farm:
-                Farm::Opencue {
-                    frames,
-                    chunk,
-                    output,
-                    command,
-                },
-        } => {
-            let args = farm::absolute_args(&command, &working_folder()?)?;
-            let outline = farm::opencue_outline(&farm::this_exrcomp()?, &args, &frames, chunk)?;
-            farm::write_template(&output, &outline)
-        }
-        Command::Farm {
-            farm:
-                Farm::Openjd {
-                    frames,
-                    chunk,
-                    output,
-                    command,
-                },
-        } => {
-            let args = farm::absolute_args(&command, &working_folder()?)?;
-            let template = farm::openjd_template(
-                &farm::this_exrcomp()?,
-                &args,
-                &farm::chunks(&frames, chunk)?,
-            );
-            farm::write_template(&output, &template)
+        Command::Farm { farm } => {
+            let (Farm::Openjd(job) | Farm::Opencue(job)) = &farm;
+            let args = farm::absolute_args(&job.command, &working_folder()?)?;
+            let exrcomp = farm::this_exrcomp()?;
+            let text = match &farm {
+                Farm::Openjd(_) => {
+                    farm::openjd_template(&exrcomp, &args, &farm::chunks(&job.frames, job.chunk)?)
+                }
+                Farm::Opencue(_) => farm::opencue_outline(&exrcomp, &args, &job.frames, job.chunk)?,
+            };
+            farm::write_template(&job.output, &text)
         }
         Command::Run { job, output, run } => {
             let mut plan = crate::job::load(&job)?;

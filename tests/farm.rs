@@ -12,6 +12,18 @@ fn ok(args: &[&str]) {
     assert!(out.status.success(), "{args:?}: {}", stderr(&out));
 }
 
+/// Frames 1-7 of fg and bg plates in `d`.
+fn plates(d: &Path) {
+    for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
+        generate(
+            &d.join(format!("{name}.####.exr")),
+            kind,
+            (64, 48),
+            &["--frames", "1-7"],
+        );
+    }
+}
+
 fn openjd(openjd: &Path, args: &[&str], cwd: &Path) {
     let out = Command::new(openjd)
         .args(args)
@@ -33,14 +45,7 @@ fn an_openjd_template_checks_runs_and_matches_a_local_run_byte_for_byte() {
     };
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
-        generate(
-            &d.join(format!("{name}.####.exr")),
-            kind,
-            (64, 48),
-            &["--frames", "1-7"],
-        );
-    }
+    plates(d);
     // Relative names, made absolute in the template (tasks run elsewhere).
     let make = Command::new(env!("CARGO_BIN_EXE_exrcomp"))
         .args([
@@ -171,14 +176,7 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     };
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
-        generate(
-            &d.join(format!("{name}.####.exr")),
-            kind,
-            (64, 48),
-            &["--frames", "1-7"],
-        );
-    }
+    plates(d);
     let p = |n: &str| d.join(n);
     let (fg, bg, out, job) = (
         p("fg.####.exr"),
