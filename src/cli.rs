@@ -248,6 +248,14 @@ pub enum Command {
         #[command(subcommand)]
         farm: Farm,
     },
+    /// Join band files written with --rows into one file, copying their
+    /// compressed chunks (nothing is decoded or re-encoded).
+    Stitch {
+        #[arg(required = true, num_args = 2..)]
+        bands: Vec<PathBuf>,
+        #[arg(short, long)]
+        output: PathBuf,
+    },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
@@ -424,6 +432,10 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(long)]
     pub json: bool,
+    /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
+    /// band of a huge plate for one machine; `exrcomp stitch` joins them.
+    #[arg(long, value_parser = parse_rows)]
+    pub rows: Option<(i32, i32)>,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
@@ -450,6 +462,15 @@ pub fn parse_screen(text: &str) -> Result<[f32; 3], String> {
         [_, _, _] => Err("a screen colour needs one channel above the others".into()),
         _ => Err("expected green, blue or R,G,B".into()),
     }
+}
+
+fn parse_rows(text: &str) -> Result<(i32, i32), String> {
+    let bad = || "expected Y0-Y1 (rows Y0 to Y1, Y1 excluded)".to_string();
+    let (a, b) = text.rsplit_once('-').ok_or_else(bad)?;
+    Ok((
+        a.trim().parse().map_err(|_| bad())?,
+        b.trim().parse().map_err(|_| bad())?,
+    ))
 }
 
 fn parse_pair(text: &str) -> Result<(String, String), String> {

@@ -237,6 +237,7 @@ pub fn run(command: Command) -> Result<()> {
         Command::Dilate(morph) => morphology(true, morph),
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
+        Command::Stitch { bands, output } => crate::io::stitch::stitch(&bands, &output),
         Command::Farm { farm } => {
             let (Farm::Openjd(job) | Farm::Opencue(job)) = &farm;
             let args = farm::absolute_args(&job.command, &working_folder()?)?;
@@ -454,6 +455,7 @@ fn input_job(
         zip_level: run.zip_level,
         resume: run.resume,
         keep_going: run.keep_going,
+        rows: run.rows,
     };
     let summary = Summary {
         skipped: resolved.skipped,
@@ -496,6 +498,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         zip_level: run.zip_level,
         resume: run.resume,
         keep_going: run.keep_going,
+        rows: run.rows,
     })
 }
 

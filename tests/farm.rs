@@ -253,3 +253,81 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
         );
     }
 }
+
+#[test]
+fn bands_rendered_apart_stitch_into_the_whole_render_byte_for_byte() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate(&d.join("fg.exr"), "fg", (64, 100), &[]);
+    generate(&d.join("bg.exr"), "bg", (64, 100), &[]);
+    // Halos of 5 and 3 rows one after the other: a band reads 8 rows past its edges.
+    let job = "[[node]]\nname = \"fg\"\nread = \"fg.exr\"\n[[node]]\nname = \"bg\"\nread = \"bg.exr\"\n\
+        [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"fg\", \"bg\"]\n\
+        [[node]]\nname = \"soft\"\nop = \"blur\"\nradius = 5\ninputs = [\"comp\"]\n\
+        [[node]]\nname = \"dof\"\nop = \"defocus\"\nfocus = 5.0\nscale = 6.0\nmax_radius = 3\ninputs = [\"soft\"]\n\
+        [[node]]\nname = \"out\"\nwrite = \"whole.exr\"\ninputs = [\"dof\"]\n";
+    let p = |n: &str| d.join(n);
+    std::fs::write(p("job.toml"), job).unwrap();
+    ok(&["run", s(&p("job.toml")), "-q"]);
+    for (name, rows) in [
+        ("b1.exr", "0-32"),
+        ("b2.exr", "32-48"),
+        ("b3.exr", "48-100"),
+    ] {
+        ok(&[
+            "run",
+            s(&p("job.toml")),
+            "-o",
+            s(&p(name)),
+            "--rows",
+            rows,
+            "-q",
+        ]);
+        assert_eq!(
+            read_image(&p(name)).height,
+            if name == "b3.exr" {
+                52
+            } else {
+                [32, 16][(name == "b2.exr") as usize]
+            }
+        );
+    }
+    // In any order on the command line.
+    ok(&[
+        "stitch",
+        s(&p("b3.exr")),
+        s(&p("b1.exr")),
+        s(&p("b2.exr")),
+        "-o",
+        s(&p("stitched.exr")),
+    ]);
+    assert_eq!(
+        std::fs::read(p("stitched.exr")).unwrap(),
+        std::fs::read(p("whole.exr")).unwrap()
+    );
+    assert_peers_read(&p("stitched.exr"));
+    // A band off the block grid, and a gap between bands, are refused.
+    let out = run(&[
+        "run",
+        s(&p("job.toml")),
+        "-o",
+        s(&p("x.exr")),
+        "--rows",
+        "5-32",
+    ]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    let out = run(&[
+        "stitch",
+        s(&p("b1.exr")),
+        s(&p("b3.exr")),
+        "-o",
+        s(&p("gap.exr")),
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("starts at row 48 but the bands before it end at row 32"),
+        "{}",
+        stderr(&out)
+    );
+    assert!(!p("gap.exr").exists());
+}

@@ -13,6 +13,7 @@ use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
 use crate::io::writer::write_file;
 use crossbeam_channel::{bounded, Receiver, Sender};
+use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -157,14 +158,16 @@ fn compose_stage(
 ) -> Result<()> {
     let mut composer = None;
     let mut frame = 0;
+    let mut written = IntegerBounds::zero();
     while let Some(msg) = receive(&rx) {
         let out = match msg {
             Msg::Begin(plan) => {
                 frame = plan.frame;
+                written = plan.window();
                 let lines = plan.header.compression.scan_lines_per_block();
                 composer = Some(Composer::new(
                     &job.graph,
-                    plan.window(),
+                    plan.computed,
                     &plan.channels,
                     &plan.windows,
                     lines,
@@ -176,7 +179,10 @@ fn compose_stage(
                     .as_mut()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
                 match composer.push(frame, rows, strips) {
-                    Ok(Some(rows)) => Msg::Strip(rows),
+                    Ok(Some(rows)) => match written_rows(rows, written) {
+                        Some(rows) => Msg::Strip(rows),
+                        None => continue,
+                    },
                     Ok(None) => continue,
                     Err(m) => return Err(Error::new(Kind::Input, format!("frame {frame}: {m}"))),
                 }
@@ -192,6 +198,22 @@ fn compose_stage(
         }
     }
     Ok(())
+}
+
+/// The part of composed `rows` inside the written window (a band's rows;
+/// all of them without a band): whole blocks, as the band is on the grid.
+fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
+    let (top, bottom) = (
+        rows.y.max(window.position.y()),
+        rows.end().min(window.end().y()),
+    );
+    if top >= bottom {
+        return None;
+    }
+    if (top, bottom) == (rows.y, rows.end()) {
+        return Some(rows);
+    }
+    Some(rows.copy_rows(top..bottom))
 }
 
 fn encode_stage(

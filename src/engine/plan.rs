@@ -44,6 +44,8 @@ pub struct Job {
     pub resume: bool,
     /// A frame whose input is bad is reported and the run goes on.
     pub keep_going: bool,
+    /// Write only rows `y0..y1` of each frame (a band, for `stitch`).
+    pub rows: Option<(i32, i32)>,
 }
 
 /// One output frame and, per input, the frame it reads.
@@ -100,9 +102,13 @@ pub struct FramePlan {
     pub channels: Vec<Vec<ChannelDescription>>,
     pub windows: Vec<IntegerBounds>,
     pub strip_rows: usize,
+    /// The rows computed: the whole output window, or for a band the band
+    /// and the halo rows around it, on the output's block grid.
+    pub computed: IntegerBounds,
 }
 
 impl FramePlan {
+    /// The window written (the band's, when there is one).
     pub fn window(&self) -> IntegerBounds {
         self.header.data_window()
     }
@@ -113,7 +119,7 @@ impl FramePlan {
 
     /// The row ranges of the strips, top to bottom.
     pub fn strips(&self) -> impl Iterator<Item = std::ops::Range<i32>> {
-        let (top, bottom) = (self.window().position.y(), self.window().end().y());
+        let (top, bottom) = (self.computed.position.y(), self.computed.end().y());
         let step = self.strip_rows as i32;
         (top..bottom)
             .step_by(self.strip_rows)
@@ -216,6 +222,10 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         .div_ceil(header.compression.scan_lines_per_block());
 
     let lines = header.compression.scan_lines_per_block();
+    let computed = match job.rows {
+        Some(rows) => band(&mut header, graph, rows)?,
+        None => window,
+    };
     let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
     let blocks = STRIP_BYTES
         .div_ceil(block_bytes.max(1))
@@ -231,7 +241,39 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         channels,
         windows,
         strip_rows: blocks * lines,
+        computed,
     })
+}
+
+/// Narrows `header` to the band of rows `y0..y1` (on its block grid) and
+/// returns the rows to compute for it: the band and, around it, the rows the
+/// graph's halos reach (the deepest sum along any path), whole blocks.
+fn band(header: &mut Header, graph: &Graph, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
+    let window = header.data_window();
+    let (top, bottom) = (window.position.y(), window.end().y());
+    let lines = header.compression.scan_lines_per_block() as i32;
+    let y1 = y1.min(bottom);
+    let on_grid = |y: i32| (y - top) % lines == 0 || y == bottom;
+    if y0 < top || y0 >= y1 || !on_grid(y0) || !on_grid(y1) {
+        return Err(Error::usage(format!(
+            "--rows {y0}-{y1}: a band must lie in rows {top}-{bottom} and start and end on \
+             {lines}-line block boundaries counted from row {top}"
+        )));
+    }
+    let reach = graph.evaluate(
+        |_| 0,
+        |op, args: &[usize]| args.iter().copied().max().unwrap_or(0) + op.halo(),
+    )[graph.output()] as i32;
+    let first = (top + (y0 - reach - top).max(0) / lines * lines).max(top);
+    let last = (y1 + reach).min(bottom);
+    let last = (top + (last - top + lines - 1) / lines * lines).min(bottom);
+    header.own_attributes.layer_position = exr::math::Vec2(window.position.x(), y0);
+    header.layer_size = exr::math::Vec2(window.size.width(), (y1 - y0) as usize);
+    header.chunk_count = ((y1 - y0) as usize).div_ceil(lines as usize);
+    Ok(IntegerBounds::new(
+        (window.position.x(), first),
+        (window.size.width(), (last - first) as usize),
+    ))
 }
 
 /// Input `i`'s flattening, if it is deep: its own file and those merged

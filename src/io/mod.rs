@@ -5,5 +5,6 @@ pub mod deflate;
 pub mod parts;
 pub mod reader;
 pub mod sequence;
+pub mod stitch;
 pub mod writer;
 pub mod zip;
