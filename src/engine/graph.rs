@@ -59,13 +59,6 @@ impl Graph {
         Graph { nodes }
     }
 
-    pub fn input_count(&self) -> usize {
-        self.nodes
-            .iter()
-            .filter(|n| matches!(n, Node::Input(_)))
-            .count()
-    }
-
     pub fn output(&self) -> usize {
         self.nodes.len() - 1
     }
