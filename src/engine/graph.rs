@@ -63,13 +63,6 @@ impl Graph {
         self.nodes.len() - 1
     }
 
-    pub fn halo(&self, node: usize) -> usize {
-        match &self.nodes[node] {
-            Node::Input(_) => 0,
-            Node::Op { op, .. } => op.halo(),
-        }
-    }
-
     /// Per node, a value computed from its inputs' values: `input` for input
     /// nodes, `combine(op, values of its inputs)` for operations.
     pub fn evaluate<T: Clone>(
