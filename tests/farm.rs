@@ -12,6 +12,22 @@ fn ok(args: &[&str]) {
     assert!(out.status.success(), "{args:?}: {}", stderr(&out));
 }
 
+/// Frames 1-7 of fg over bg, run locally into `d/local/`.
+fn local_over(d: &Path) {
+    let p = |n: &str| d.join(n);
+    let (fg, bg, out) = (p("fg.####.exr"), p("bg.####.exr"), p("local/comp.####.exr"));
+    ok(&[
+        "over",
+        s(&fg),
+        s(&bg),
+        "-o",
+        s(&out),
+        "--frames",
+        "1-7",
+        "-q",
+    ]);
+}
+
 /// Frames 1-7 of fg and bg plates in `d`.
 fn plates(d: &Path) {
     for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
@@ -70,16 +86,7 @@ fn an_openjd_template_checks_runs_and_matches_a_local_run_byte_for_byte() {
     openjd(&openjd_cli, &["check", "job.yaml"], d);
     openjd(&openjd_cli, &["run", "job.yaml", "--step", "exrcomp"], d);
     let p = |n: &str| d.join(n);
-    ok(&[
-        "over",
-        s(&p("fg.####.exr")),
-        s(&p("bg.####.exr")),
-        "-o",
-        s(&p("local/comp.####.exr")),
-        "--frames",
-        "1-7",
-        "-q",
-    ]);
+    local_over(d);
     let same = |frame: i64| {
         let name = format!("comp.{frame:04}.exr");
         std::fs::read(p("farm").join(&name)).unwrap()
@@ -235,16 +242,7 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
         let status = Command::new(words[0]).args(&words[1..]).status().unwrap();
         assert!(status.success(), "{line}");
     }
-    ok(&[
-        "over",
-        s(&p("fg.####.exr")),
-        s(&p("bg.####.exr")),
-        "-o",
-        s(&p("local/comp.####.exr")),
-        "--frames",
-        "1-7",
-        "-q",
-    ]);
+    local_over(d);
     for frame in 1..=7 {
         let name = format!("comp.{frame:04}.exr");
         assert_eq!(
