@@ -363,6 +363,11 @@ fn visit(
 
 type Make = Box<dyn Fn() -> Box<dyn Op>>;
 
+/// A recipe of one operation, made by `make` for each graph node.
+fn one<O: Op + 'static>(make: impl Fn() -> O + 'static) -> Recipe {
+    Recipe::One(Box::new(move || Box::new(make())))
+}
+
 /// How an op node becomes graph operations.
 enum Recipe {
     One(Make),
@@ -445,12 +450,10 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
         "premult" | "unpremult" => {
             want(1..=1, "one input")?;
             let inverse = op.get_ref() == "unpremult";
-            Recipe::One(Box::new(move || {
-                Box::new(Premult {
-                    inverse,
-                    layers: layers.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || Premult {
+                inverse,
+                layers: layers.clone(),
+            })
         }
         "defocus" => {
             want(1..=1, "one input")?;
@@ -469,16 +472,14 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                 );
             };
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
-            Recipe::One(Box::new(move || {
-                Box::new(Defocus {
-                    focus,
-                    scale,
-                    max_radius: max_radius as usize,
-                    aperture,
-                    z_channel: z_channel.clone(),
-                    layers: layers.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || Defocus {
+                focus,
+                scale,
+                max_radius: max_radius as usize,
+                aperture,
+                z_channel: z_channel.clone(),
+                layers: layers.clone(),
+            })
         }
         "vblur" => {
             want(1..=1, "one input")?;
@@ -499,14 +500,12 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                 },
             };
             let scale = spec.scale.unwrap_or(1.0);
-            Recipe::One(Box::new(move || {
-                Box::new(VectorBlur {
-                    scale,
-                    vectors: vectors.clone(),
-                    reach: reach as usize,
-                    layers: layers.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || VectorBlur {
+                scale,
+                vectors: vectors.clone(),
+                reach: reach as usize,
+                layers: layers.clone(),
+            })
         }
         "stereo" => {
             want(1..=1, "one input")?;
@@ -520,13 +519,11 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                 )
             })?;
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
-            Recipe::One(Box::new(move || {
-                Box::new(Stereo {
-                    eye,
-                    disparity,
-                    z_channel: z_channel.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || Stereo {
+                eye,
+                disparity,
+                z_channel: z_channel.clone(),
+            })
         }
         "key" => {
             want(1..=1, "one input")?;
@@ -543,38 +540,36 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             }
             let (gain, balance) = (spec.gain.unwrap_or(1.0), spec.balance.unwrap_or(0.5));
             let (despill, invert) = (spec.despill.unwrap_or(false), spec.invert.unwrap_or(false));
-            Recipe::One(Box::new(move || {
-                Box::new(Matte(Pull::Key(Key {
+            one(move || {
+                Matte(Pull::Key(Key {
                     screen,
                     gain,
                     balance,
                     clip,
                     despill,
                     invert,
-                }))) as Box<dyn Op>
-            }))
+                }))
+            })
         }
         "diffmatte" => {
             want(2..=2, "two inputs (footage, clean plate)")?;
             let (threshold, softness) =
                 (spec.threshold.unwrap_or(0.05), spec.softness.unwrap_or(0.1));
             let invert = spec.invert.unwrap_or(false);
-            Recipe::One(Box::new(move || {
-                Box::new(Matte(Pull::Difference(DiffMatte {
+            one(move || {
+                Matte(Pull::Difference(DiffMatte {
                     threshold,
                     softness,
                     invert,
-                }))) as Box<dyn Op>
-            }))
+                }))
+            })
         }
         "triangulate" => {
             want(
                 4..=4,
                 "four inputs (over A, background A, over B, background B)",
             )?;
-            Recipe::One(Box::new(|| {
-                Box::new(Matte(Pull::Triangulation)) as Box<dyn Op>
-            }))
+            one(|| Matte(Pull::Triangulation))
         }
         "erode" | "dilate" => {
             want(1..=1, "one input")?;
@@ -582,23 +577,19 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                 return at.error(node.span(), format!("op '{}' needs a radius", op.get_ref()));
             };
             let (dilate, invert) = (op.get_ref() == "dilate", spec.invert.unwrap_or(false));
-            Recipe::One(Box::new(move || {
-                Box::new(Morphology {
-                    radius: radius as usize,
-                    dilate,
-                    invert,
-                    layers: layers.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || Morphology {
+                radius: radius as usize,
+                dilate,
+                invert,
+                layers: layers.clone(),
+            })
         }
         "zmerge" => {
             want(2..=usize::MAX, "two or more inputs")?;
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
-            Recipe::One(Box::new(move || {
-                Box::new(ZMerge {
-                    z_channel: z_channel.clone(),
-                }) as Box<dyn Op>
-            }))
+            one(move || ZMerge {
+                z_channel: z_channel.clone(),
+            })
         }
         "diffrender" => {
             want(4..=4, "four inputs (object, proxy, with_shadows, plate)")?;
