@@ -60,6 +60,48 @@ fn every_operator_equals_the_reference_premultiplied_straight_and_mixed() {
     }
 }
 
+#[test]
+fn a_sparse_a_leaves_b_bit_for_bit_where_it_is_transparent_black() {
+    // A visible only inside a disc and on one lone pixel, so rows have
+    // transparent black on both sides, in the middle, and all along; B holds
+    // -0, NaN and negatives, which only a bit-exact pass keeps.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (kinds, tag) in [
+        ((Kind::Half, Kind::Half), "half"),
+        ((Kind::Float, Kind::Float), "float"),
+    ] {
+        let mut a = random_rgba(21, 0, 0, 70, 24, kinds.0, false);
+        let mut b = random_rgba(22, 0, 0, 70, 24, kinds.1, true);
+        for y in 0..24i32 {
+            for x in 0..70i32 {
+                let i = a.index(x, y).unwrap();
+                let inside = (x - 30).pow(2) + (y - 10).pow(2) < 49 || (x, y) == (66, 20);
+                for s in a.channels.values_mut().filter(|_| !inside) {
+                    s.set_f32(i, 0.0);
+                }
+                let odd = [-0.0, f32::NAN, -2.5][(x + y) as usize % 3];
+                b.channels.get_mut("G").unwrap().set_f32(i, odd);
+            }
+        }
+        let (pa, pb) = (write(d, "a.exr", &a), write(d, "b.exr", &b));
+        let (a, b) = (read_image(&pa), read_image(&pb));
+        for op in ["over", "plus", "xor", "multiply"] {
+            let ours = merge(d, op, &pa, &pb, &["--strip-rows", "5"]);
+            let reference = reference_merge(op, &a, &b, false, 1.0, &[""]);
+            assert_identical(&ours, &reference);
+            if op == "over" {
+                let g = &ours.channels["G"];
+                let kept = (0..g.len()).filter(|&i| g.bits(i) == b.channels["G"].bits(i));
+                assert!(
+                    kept.count() > 70 * 24 / 2,
+                    "{tag}: B passes outside the disc"
+                );
+            }
+        }
+    }
+}
+
 /// A 4x1 float RGBA image with these R values and alphas (G = B = R).
 fn row(values: [f32; 4], alphas: [f32; 4]) -> Img {
     let mut channels = BTreeMap::new();

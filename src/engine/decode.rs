@@ -73,16 +73,33 @@ impl InputCursor {
     }
 }
 
-/// Decodes rows `rows` of every input into strips covering `columns`
-/// (x, width): zeros where an input has no data.
-pub fn decode_strip(
+/// Decodes rows `rows` of every input (see `decode_strip`).
+pub fn decode_all(
     inputs: &mut [InputCursor],
     columns: (i32, usize),
     rows: Range<i32>,
 ) -> Result<Vec<Rows>> {
+    let strips = decode_strip(inputs, columns, rows, |_| true, |_, _| false)?;
+    Ok(strips
+        .into_iter()
+        .map(|s| s.expect("every input selected"))
+        .collect())
+}
+
+/// Decodes rows `rows` of the inputs `selected` picks (`None` for the
+/// others) into strips covering `columns` (x, width): zeros where an input
+/// has no data, and for chunks `skip(input, chunk)` names (taken as read).
+pub fn decode_strip(
+    inputs: &mut [InputCursor],
+    columns: (i32, usize),
+    rows: Range<i32>,
+    selected: impl Fn(usize) -> bool,
+    skip: impl Fn(usize, usize) -> bool,
+) -> Result<Vec<Option<Rows>>> {
     let jobs: Vec<(usize, usize)> = inputs
         .iter()
         .enumerate()
+        .filter(|(i, _)| selected(*i))
         .flat_map(|(i, input)| {
             let carried = input.carried.as_ref().map(|(k, _)| *k);
             input
@@ -90,26 +107,12 @@ pub fn decode_strip(
                 .filter(move |&k| Some(k) != carried)
                 .map(move |k| (i, k))
         })
+        .filter(|&(i, k)| !skip(i, k))
         .collect();
     let decoded: Vec<(usize, usize, UncompressedBlock)> = jobs
         .par_iter()
         .map(|&(i, k)| Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?)))
         .collect::<Result<_>>()?;
-
-    let mut strips: Vec<Rows> = inputs
-        .iter()
-        .map(|input| {
-            let header = input.file.header(input.part);
-            Rows::zeros(
-                columns.0,
-                rows.start,
-                columns.1,
-                (rows.end - rows.start) as usize,
-                header.channels.list.to_vec(),
-                input.window,
-            )
-        })
-        .collect();
 
     let mut blocks: Vec<Vec<(usize, UncompressedBlock)>> = inputs
         .iter_mut()
@@ -118,42 +121,69 @@ pub fn decode_strip(
     for (i, k, block) in decoded {
         blocks[i].push((k, block));
     }
+    let mut strips = Vec::with_capacity(inputs.len());
     for (i, input) in inputs.iter_mut().enumerate() {
-        let window = input.window;
-        for (_, block) in &blocks[i] {
-            copy_block(block, window, &mut strips[i], &rows);
+        if !selected(i) {
+            strips.push(None);
+            continue;
+        }
+        strips.push(Some(input.strip(columns, &rows, &mut blocks[i])?));
+    }
+    Ok(strips)
+}
+
+impl InputCursor {
+    /// The strip of rows `rows` from `blocks` (this input's decoded chunks,
+    /// taken); keeps the last one when it reaches into the next strip and
+    /// releases the file bytes read.
+    fn strip(
+        &mut self,
+        columns: (i32, usize),
+        rows: &Range<i32>,
+        blocks: &mut Vec<(usize, UncompressedBlock)>,
+    ) -> Result<Rows> {
+        if let Some(deep) = &self.deep {
+            return deep.strip(columns, rows.clone());
+        }
+        let header = self.file.header(self.part);
+        let mut strip = Rows::zeros(
+            columns.0,
+            rows.start,
+            columns.1,
+            (rows.end - rows.start) as usize,
+            header.channels.list.to_vec(),
+            self.window,
+        );
+        let window = self.window;
+        for (_, block) in blocks.iter() {
+            copy_block(block, window, &mut strip, rows);
         }
         // The last chunk may hold rows of the next strip: keep it decoded.
-        let needed = input.chunks_for(&rows);
+        let needed = self.chunks_for(rows);
         let window_end = window.end().y();
-        if let Some(last) = blocks[i].drain(..).max_by_key(|(k, _)| *k) {
+        if let Some(last) = blocks.drain(..).max_by_key(|(k, _)| *k) {
             let block_end = window.position.y()
                 + (last.1.index.pixel_position.y() + last.1.index.pixel_size.y()) as i32;
             if block_end > rows.end && rows.end < window_end {
-                input.carried = Some(last);
+                self.carried = Some(last);
             }
         }
-        let done = match &input.carried {
+        let done = match &self.carried {
             Some((k, _)) => *k,
             None => needed.end,
         };
-        if done > input.done {
-            let bytes = input.file.chunk_bytes(input.part, input.done..done);
-            let span = match input.released.take() {
+        if done > self.done {
+            let bytes = self.file.chunk_bytes(self.part, self.done..done);
+            let span = match self.released.take() {
                 Some(r) => r.start.min(bytes.start)..r.end.max(bytes.end),
                 None => bytes,
             };
-            input.file.release_bytes(span.clone());
-            input.released = Some(span);
-            input.done = done;
+            self.file.release_bytes(span.clone());
+            self.released = Some(span);
+            self.done = done;
         }
+        Ok(strip)
     }
-    for (strip, input) in strips.iter_mut().zip(inputs.iter()) {
-        if let Some(deep) = &input.deep {
-            *strip = deep.strip(columns, rows.clone())?;
-        }
-    }
-    Ok(strips)
 }
 
 /// Copies the lines of `block` that fall in `rows` into `strip`, clipped to

@@ -17,8 +17,14 @@ pub struct IndexedChunk {
 }
 
 /// Compresses `rows` (which start on a block boundary of `header`'s data
-/// window) into chunks; ZIP and ZIPS at libdeflate level `zip_level`.
-pub fn encode_rows(rows: &Rows, header: &Header, zip_level: u8) -> Result<Vec<IndexedChunk>> {
+/// window) into chunks, in order; ZIP and ZIPS at libdeflate level
+/// `zip_level`. Blocks that `passed` holds are taken from it as they are.
+pub fn encode_rows(
+    rows: &Rows,
+    header: &Header,
+    zip_level: u8,
+    passed: Vec<IndexedChunk>,
+) -> Result<Vec<IndexedChunk>> {
     let window = header.data_window();
     let lines = header.compression.scan_lines_per_block();
     let first_row = (rows.y - window.position.y()) as usize;
@@ -34,8 +40,10 @@ pub fn encode_rows(rows: &Rows, header: &Header, zip_level: u8) -> Result<Vec<In
         })
         .collect();
     let headers = std::slice::from_ref(header);
-    (0..rows.height.div_ceil(lines))
+    let first = first_row / lines;
+    let mut chunks: Vec<IndexedChunk> = (0..rows.height.div_ceil(lines))
         .into_par_iter()
+        .filter(|b| !passed.iter().any(|c| c.index == first + b))
         .map(|b| {
             let y0 = rows.y + (b * lines) as i32;
             let y1 = (y0 + lines as i32).min(rows.end());
@@ -70,7 +78,10 @@ pub fn encode_rows(rows: &Rows, header: &Header, zip_level: u8) -> Result<Vec<In
                 chunk,
             })
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    chunks.extend(passed);
+    chunks.sort_unstable_by_key(|c| c.index);
+    Ok(chunks)
 }
 
 fn scanline_chunk(y: i32, compressed_pixels_le: Vec<u8>) -> Chunk {

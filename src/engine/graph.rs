@@ -2,6 +2,7 @@
 
 use super::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use std::ops::Range;
 
 /// An operation over strips of rows. Implementations are pure: the output rows
 /// depend only on the input rows they are given.
@@ -27,6 +28,25 @@ pub trait Op: Send + Sync {
             .copied()
             .reduce(union)
             .expect("an operation has inputs")
+    }
+
+    /// Whether the result is the second input, bit for bit, wherever the
+    /// first is transparent black (merge over, plus...): what lets an output
+    /// block be the second input's chunk as it is (`passthrough.rs`).
+    fn passes_second(&self) -> bool {
+        false
+    }
+
+    /// Whether rows `rows` of `first` are transparent black all along, as
+    /// this op sees them (given the second input's channels). Asked only of
+    /// ops that pass the second input.
+    fn hides_nothing(
+        &self,
+        _first: &Rows,
+        _second: &[ChannelDescription],
+        _rows: Range<i32>,
+    ) -> bool {
+        false
     }
 
     /// Fills `out` (its rows, columns and channels are set; samples are zero)

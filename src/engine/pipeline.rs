@@ -4,9 +4,10 @@
 //! while memory stays bounded by the channel capacities.
 
 use super::compose::Composer;
-use super::decode::{decode_strip, InputCursor};
+use super::decode::{decode_all, InputCursor};
 use super::encode::{encode_rows, IndexedChunk};
 use super::interrupt;
+use super::passthrough::PassThrough;
 use super::plan::{plan_frame, FramePlan, FrameSources, Job};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
@@ -39,6 +40,20 @@ pub trait Events: Sync {
     fn failed(&self, frame: i64, error: &Error);
 }
 
+/// A strip of every input, and the output blocks that are an input's chunks
+/// as they are (`passthrough.rs`).
+struct Decoded {
+    rows: Range<i32>,
+    strips: Vec<Rows>,
+    passed: Vec<IndexedChunk>,
+}
+
+/// Output rows, and chunks passed for blocks among them.
+struct Composed {
+    rows: Rows,
+    passed: Vec<IndexedChunk>,
+}
+
 /// Receiving side of a stage: `None` once the upstream stage has stopped.
 fn receive<T>(rx: &Receiver<Msg<T>>) -> Option<Msg<T>> {
     rx.recv().ok()
@@ -53,8 +68,8 @@ fn send<T>(tx: &Sender<Msg<T>>, msg: Msg<T>) -> bool {
 /// Runs `job`, reporting each frame to `events`. Stops early, without an
 /// error, when an interruption is requested (`interrupt::requested`).
 pub fn run(job: &Job, events: &impl Events) -> Result<()> {
-    let (decoded_tx, decoded_rx) = bounded::<Msg<(Range<i32>, Vec<Rows>)>>(CHANNEL_STRIPS);
-    let (composed_tx, composed_rx) = bounded::<Msg<Rows>>(CHANNEL_STRIPS);
+    let (decoded_tx, decoded_rx) = bounded::<Msg<Decoded>>(CHANNEL_STRIPS);
+    let (composed_tx, composed_rx) = bounded::<Msg<Composed>>(CHANNEL_STRIPS);
     let (encoded_tx, encoded_rx) = bounded::<Msg<Vec<IndexedChunk>>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
@@ -73,11 +88,7 @@ pub fn run(job: &Job, events: &impl Events) -> Result<()> {
     results.into_iter().collect::<Result<Vec<()>>>().map(drop)
 }
 
-fn decode_stage(
-    job: &Job,
-    events: &impl Events,
-    tx: Sender<Msg<(Range<i32>, Vec<Rows>)>>,
-) -> Result<()> {
+fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Result<()> {
     for sources in &job.frames {
         if interrupt::requested() {
             break;
@@ -112,7 +123,7 @@ fn decode_stage(
 fn decode_frame(
     job: &Job,
     sources: &FrameSources,
-    tx: &Sender<Msg<(Range<i32>, Vec<Rows>)>>,
+    tx: &Sender<Msg<Decoded>>,
     begun: &mut bool,
 ) -> Result<bool> {
     let plan = Arc::new(plan_frame(job, sources)?);
@@ -127,6 +138,7 @@ fn decode_frame(
         .collect();
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());
+    let pass = PassThrough::find(&job.graph, &plan);
     if !send(tx, Msg::Begin(plan.clone())) {
         return Ok(false);
     }
@@ -135,8 +147,16 @@ fn decode_frame(
         if interrupt::requested() {
             return Ok(false);
         }
-        let strips = decode_strip(&mut cursors, columns, rows.clone())?;
-        if !send(tx, Msg::Strip((rows, strips))) {
+        let (strips, passed) = match &pass {
+            Some(pass) => pass.decode(&plan, &job.graph, &mut cursors, columns, rows.clone())?,
+            None => (decode_all(&mut cursors, columns, rows.clone())?, Vec::new()),
+        };
+        let decoded = Decoded {
+            rows,
+            strips,
+            passed,
+        };
+        if !send(tx, Msg::Strip(decoded)) {
             return Ok(false);
         }
     }
@@ -151,12 +171,11 @@ fn output_complete(path: &std::path::Path) -> bool {
         .is_ok()
 }
 
-fn compose_stage(
-    job: &Job,
-    rx: Receiver<Msg<(Range<i32>, Vec<Rows>)>>,
-    tx: Sender<Msg<Rows>>,
-) -> Result<()> {
+fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>>) -> Result<()> {
     let mut composer = None;
+    // Passed chunks wait here until their rows come out of the graph.
+    let mut passed: Vec<IndexedChunk> = Vec::new();
+    let mut lines = 1;
     let mut frame = 0;
     let mut written = IntegerBounds::zero();
     while let Some(msg) = receive(&rx) {
@@ -164,7 +183,8 @@ fn compose_stage(
             Msg::Begin(plan) => {
                 frame = plan.frame;
                 written = plan.window();
-                let lines = plan.header.compression.scan_lines_per_block();
+                lines = plan.header.compression.scan_lines_per_block();
+                passed.clear();
                 composer = Some(Composer::new(
                     &job.graph,
                     plan.computed,
@@ -174,13 +194,22 @@ fn compose_stage(
                 ));
                 Msg::Begin(plan)
             }
-            Msg::Strip((rows, strips)) => {
+            Msg::Strip(decoded) => {
                 let composer = composer
                     .as_mut()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
-                match composer.push(frame, rows, strips) {
+                passed.extend(decoded.passed);
+                match composer.push(frame, decoded.rows, decoded.strips) {
                     Ok(Some(rows)) => match written_rows(rows, written) {
-                        Some(rows) => Msg::Strip(rows),
+                        Some(rows) => {
+                            let top = written.position.y();
+                            let blocks = (rows.y - top) as usize / lines
+                                ..((rows.end() - top) as usize).div_ceil(lines);
+                            let (now, later) =
+                                passed.drain(..).partition(|c| blocks.contains(&c.index));
+                            passed = later;
+                            Msg::Strip(Composed { rows, passed: now })
+                        }
                         None => continue,
                     },
                     Ok(None) => continue,
@@ -218,7 +247,7 @@ fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
 
 fn encode_stage(
     job: &Job,
-    rx: Receiver<Msg<Rows>>,
+    rx: Receiver<Msg<Composed>>,
     tx: Sender<Msg<Vec<IndexedChunk>>>,
 ) -> Result<()> {
     let mut plan: Option<Arc<FramePlan>> = None;
@@ -228,11 +257,16 @@ fn encode_stage(
                 plan = Some(p.clone());
                 Msg::Begin(p)
             }
-            Msg::Strip(rows) => {
+            Msg::Strip(composed) => {
                 let plan = plan
                     .as_ref()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
-                Msg::Strip(encode_rows(&rows, &plan.header, job.zip_level)?)
+                Msg::Strip(encode_rows(
+                    &composed.rows,
+                    &plan.header,
+                    job.zip_level,
+                    composed.passed,
+                )?)
             }
             Msg::End => Msg::End,
             Msg::Abort => Msg::Abort,

@@ -113,6 +113,11 @@ impl FramePlan {
         self.header.data_window()
     }
 
+    /// The header of input `i`'s part read.
+    pub fn header_of(&self, i: usize) -> &Header {
+        self.inputs[i].header(self.parts[i])
+    }
+
     pub fn pixels(&self) -> usize {
         self.window().size.area()
     }

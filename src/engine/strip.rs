@@ -150,13 +150,13 @@ impl Rows {
         start..start + self.width
     }
 
-    /// The alpha of an image without an alpha channel, for absolute row `y`:
-    /// 1 inside the valid window and 0 outside it.
-    pub fn implicit_alpha(&self, y: i32, out: &mut [f32]) {
+    /// The alpha of an image without an alpha channel, for absolute row `y`
+    /// from sample offset `from` on: 1 inside the valid window, 0 outside it.
+    pub fn implicit_alpha(&self, y: i32, from: usize, out: &mut [f32]) {
         let v = self.valid;
         let inside_row = y >= v.position.y() && y < v.end().y();
         for (i, o) in out.iter_mut().enumerate() {
-            let x = self.x + i as i32;
+            let x = self.x + (from + i) as i32;
             let inside = inside_row && x >= v.position.x() && x < v.end().x();
             *o = if inside { 1.0 } else { 0.0 };
         }

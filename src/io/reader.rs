@@ -192,6 +192,18 @@ impl ExrFile {
         Ok(())
     }
 
+    /// Chunk `index` of a ZIP or ZIPS `part`, checked to decompress (size and
+    /// checksum) but left compressed: for copying into an output as it is.
+    pub fn checked_zip_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
+        let chunk = self.read_chunk(part, index)?;
+        if let CompressedBlock::ScanLine(block) = &chunk.compressed_block {
+            let (_, expected) = block_size(self.header(part), block.y_coordinate);
+            zip::verify(&block.compressed_pixels_le, expected)
+                .map_err(|m| self.error(format!("chunk {index} does not decompress: {m}")))?;
+        }
+        Ok(chunk)
+    }
+
     /// Reads and decompresses chunk `index` of `part`.
     pub fn decode_chunk(&self, part: usize, index: usize) -> Result<UncompressedBlock> {
         let chunk = self.read_chunk(part, index)?;
@@ -201,11 +213,7 @@ impl ExrFile {
             (CompressedBlock::ScanLine(block), Compression::ZIP1 | Compression::ZIP16) => {
                 let window = header.data_window();
                 let top = (block.y_coordinate - window.position.y()) as usize;
-                let rows = header
-                    .compression
-                    .scan_lines_per_block()
-                    .min(window.size.height() - top);
-                let expected = window.size.width() * rows * header.channels.bytes_per_pixel;
+                let (rows, expected) = block_size(header, block.y_coordinate);
                 let packed = &block.compressed_pixels_le;
                 let data = if packed.len() == expected {
                     packed.clone()
@@ -333,4 +341,18 @@ fn check_header_sizes(header: &Header) -> std::result::Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The lines and raw bytes of the scanline block starting at line `y`.
+fn block_size(header: &Header, y: i32) -> (usize, usize) {
+    let window = header.data_window();
+    let top = (y - window.position.y()) as usize;
+    let rows = header
+        .compression
+        .scan_lines_per_block()
+        .min(window.size.height() - top);
+    (
+        rows,
+        window.size.width() * rows * header.channels.bytes_per_pixel,
+    )
 }

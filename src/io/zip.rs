@@ -48,17 +48,36 @@ pub fn compress(raw: &[u8], level: u8) -> Option<Vec<u8>> {
 pub fn decompress(compressed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
     SCRATCH.with(|buffers| {
         let mut buffers = buffers.borrow_mut();
-        let transformed = scratch(&mut buffers.0, expected);
-        let size = Decompressor::new()
-            .zlib_decompress(compressed, transformed)
-            .map_err(|e| format!("zlib data is damaged: {e:?}"))?;
-        if size != expected {
-            return Err(format!(
-                "zlib data holds {size} bytes instead of {expected}"
-            ));
-        }
-        Ok(untransform(transformed))
+        Ok(untransform(inflate(compressed, expected, &mut buffers.0)?))
     })
+}
+
+/// Checks that a chunk's bytes decompress to exactly `expected` bytes,
+/// checksum included, leaving the pixels transformed: all that a chunk
+/// copied into an output unchanged needs.
+pub fn verify(compressed: &[u8], expected: usize) -> Result<(), String> {
+    if compressed.len() == expected {
+        return Ok(()); // stored raw
+    }
+    SCRATCH.with(|buffers| inflate(compressed, expected, &mut buffers.borrow_mut().0).map(drop))
+}
+
+/// zlib-inflates `compressed` into `buffer`: the `expected` bytes.
+fn inflate<'b>(
+    compressed: &[u8],
+    expected: usize,
+    buffer: &'b mut Vec<u8>,
+) -> Result<&'b mut [u8], String> {
+    let transformed = scratch(buffer, expected);
+    let size = Decompressor::new()
+        .zlib_decompress(compressed, transformed)
+        .map_err(|e| format!("zlib data is damaged: {e:?}"))?;
+    if size != expected {
+        return Err(format!(
+            "zlib data holds {size} bytes instead of {expected}"
+        ));
+    }
+    Ok(transformed)
 }
 
 /// The byte split and the predictor into `t` (as long as `raw`): t = evens

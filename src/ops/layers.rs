@@ -39,11 +39,15 @@ impl Layer {
         format!("{}A", self.prefix)
     }
 
-    /// Alpha of absolute row `y` of `rows` as f32 (see `alphas`).
-    pub fn read_alpha(&self, rows: &Rows, y: i32, out: &mut [f32]) {
+    /// Alpha of absolute row `y` of `rows` as f32 (see `alphas`), from
+    /// sample offset `from` on, as many as `out` holds.
+    pub fn read_alpha(&self, rows: &Rows, y: i32, from: usize, out: &mut [f32]) {
         match self.alphas.iter().find_map(|n| rows.channel_index(n)) {
-            Some(a) => rows.planes[a].read_f32(rows.row_range(y), out),
-            None => rows.implicit_alpha(y, out),
+            Some(a) => {
+                let start = rows.row_range(y).start + from;
+                rows.planes[a].read_f32(start..start + out.len(), out)
+            }
+            None => rows.implicit_alpha(y, from, out),
         }
     }
 }

@@ -5,6 +5,7 @@ use super::layers::{Layer, Selection};
 use crate::engine::graph::{intersection, union, Op};
 use crate::engine::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use std::ops::Range;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum MergeOp {
@@ -197,6 +198,16 @@ impl Op for Merge {
         }
     }
 
+    fn passes_second(&self) -> bool {
+        self.b_passes()
+    }
+
+    fn hides_nothing(&self, a: &Rows, b: &[ChannelDescription], rows: Range<i32>) -> bool {
+        let layers = self.layers.resolve(&[a.channels.as_slice(), b]);
+        rows.into_iter()
+            .all(|y| visible_columns(a, &layers, y).is_empty())
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
         let (a, b) = (inputs[0], inputs[1]);
         let lists = [a.channels.as_slice(), b.channels.as_slice()];
@@ -206,35 +217,41 @@ impl Op for Merge {
         let w = columns.len();
         let mut alphas = vec![(vec![0.0f32; w], vec![0.0f32; w], vec![0.0f32; w]); layers.len()];
         let (mut ca, mut cb) = (vec![0.0f32; w], vec![0.0f32; w]);
-        let mut scratch = Vec::new();
         for y in out.valid_rows() {
-            let row = out.row_range(y);
-            let dst = row.start + columns.start..row.start + columns.end;
-            let src = |rows: &Rows| {
-                let r = rows.row_range(y);
-                r.start + columns.start..r.start + columns.end
+            // Where A is transparent black, B passes as it is (bit for bit);
+            // only the columns between A's first and last visible pixels blend.
+            let span = if self.b_passes() {
+                let s = visible_columns(a, &layers, y);
+                s.start.max(columns.start)..s.end.min(columns.end).max(columns.start)
+            } else {
+                columns.clone()
             };
-            if self.b_passes() && transparent_black(a, &layers, y) {
-                for (c, role) in roles.iter().enumerate() {
-                    let name = out.channels[c].name.to_string();
-                    match (b.channel_index(&name), role) {
-                        (Some(s), _) => out.planes[c]
-                            .bytes_mut(dst.clone())
-                            .copy_from_slice(b.planes[s].bytes(src(b))),
-                        // An alpha only A has: B's alpha as B implies it.
-                        (None, Role::Alpha(l)) => {
-                            read_alpha_columns(&layers[*l], b, y, &columns, &mut cb, &mut scratch);
-                            out.planes[c].write_f32(dst.clone(), &cb);
-                        }
-                        (None, _) => {}
-                    }
-                }
+            let (span, sides) = if span.is_empty() {
+                (
+                    columns.start..columns.start,
+                    [columns.clone(), columns.end..columns.end],
+                )
+            } else {
+                (
+                    span.clone(),
+                    [columns.start..span.start, span.end..columns.end],
+                )
+            };
+            for side in sides.into_iter().filter(|s| !s.is_empty()) {
+                pass_b(out, b, &roles, &layers, y, side, &mut cb);
+            }
+            if span.is_empty() {
                 continue;
             }
+            let n = span.len();
+            let at = |rows: &Rows| {
+                let r = rows.row_range(y);
+                r.start + span.start..r.start + span.end
+            };
             for (layer, (aa, ab, ar)) in layers.iter().zip(alphas.iter_mut()) {
-                read_alpha_columns(layer, a, y, &columns, aa, &mut scratch);
-                read_alpha_columns(layer, b, y, &columns, ab, &mut scratch);
-                for x in 0..w {
+                layer.read_alpha(a, y, span.start, &mut aa[..n]);
+                layer.read_alpha(b, y, span.start, &mut ab[..n]);
+                for x in 0..n {
                     ar[x] = if self.b_passes() && aa[x] == 0.0 {
                         ab[x]
                     } else {
@@ -242,29 +259,61 @@ impl Op for Merge {
                     };
                 }
             }
+            let dst = at(out);
             for (c, role) in roles.iter().enumerate() {
                 let name = out.channels[c].name.to_string();
                 match *role {
-                    Role::Alpha(l) => out.planes[c].write_f32(dst.clone(), &alphas[l].2),
+                    Role::Alpha(l) => out.planes[c].write_f32(dst.clone(), &alphas[l].2[..n]),
                     Role::Colour(l) => {
                         let (aa, ab, ar) = &alphas[l];
-                        read_or_zero(a, &name, src(a), &mut ca);
-                        read_or_zero(b, &name, src(b), &mut cb);
-                        for x in 0..w {
+                        read_or_zero(a, &name, at(a), &mut ca[..n]);
+                        read_or_zero(b, &name, at(b), &mut cb[..n]);
+                        for x in 0..n {
                             ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
                         }
-                        out.planes[c].write_f32(dst.clone(), &ca);
+                        out.planes[c].write_f32(dst.clone(), &ca[..n]);
                     }
                     Role::FromB => {
                         let s = b.channel_index(&name).expect("the channel comes from B");
                         out.planes[c]
                             .bytes_mut(dst.clone())
-                            .copy_from_slice(b.planes[s].bytes(src(b)));
+                            .copy_from_slice(b.planes[s].bytes(at(b)));
                     }
                 }
             }
         }
         Ok(())
+    }
+}
+
+/// Copies B's samples of row `y`, sample offsets `columns`, into `out`; an
+/// alpha only A has takes B's alpha as B implies it, colours only A has stay 0.
+fn pass_b(
+    out: &mut Rows,
+    b: &Rows,
+    roles: &[Role],
+    layers: &[Layer],
+    y: i32,
+    columns: Range<usize>,
+    scratch: &mut [f32],
+) {
+    let at = |rows: &Rows| {
+        let r = rows.row_range(y);
+        r.start + columns.start..r.start + columns.end
+    };
+    let dst = at(out);
+    for (c, role) in roles.iter().enumerate() {
+        match (b.channel_index(&out.channels[c].name.to_string()), role) {
+            (Some(s), _) => out.planes[c]
+                .bytes_mut(dst.clone())
+                .copy_from_slice(b.planes[s].bytes(at(b))),
+            (None, Role::Alpha(l)) => {
+                let alpha = &mut scratch[..columns.len()];
+                layers[*l].read_alpha(b, y, columns.start, alpha);
+                out.planes[c].write_f32(dst.clone(), alpha);
+            }
+            (None, _) => {}
+        }
     }
 }
 
@@ -297,45 +346,54 @@ fn blend(result: f32, b: f32, mix: f32) -> f32 {
     }
 }
 
-/// Alpha of `layer` in `rows` for row `y`, the columns `columns` only.
-fn read_alpha_columns(
-    layer: &Layer,
-    rows: &Rows,
-    y: i32,
-    columns: &std::ops::Range<usize>,
-    out: &mut [f32],
-    scratch: &mut Vec<f32>,
-) {
-    scratch.resize(rows.width, 0.0);
-    layer.read_alpha(rows, y, scratch);
-    out.copy_from_slice(&scratch[columns.clone()]);
+/// The first and last nonzero byte of `bytes`, looked for 64 at a time.
+fn nonzero_bytes(bytes: &[u8]) -> Option<(usize, usize)> {
+    const BLOCK: usize = 64;
+    let zero = |chunk: &[u8]| chunk.iter().fold(0, |acc, &v| acc | v) == 0;
+    let first = bytes.chunks(BLOCK).position(|c| !zero(c))? * BLOCK;
+    let first = first + bytes[first..].iter().position(|&v| v != 0)?;
+    // Chunk k from the end spans `len - (k + 1)·BLOCK .. len - k·BLOCK`.
+    let end = bytes.len() - bytes.rchunks(BLOCK).position(|c| !zero(c))? * BLOCK;
+    let start = end.saturating_sub(BLOCK);
+    let last = start + bytes[start..end].iter().rposition(|&v| v != 0)?;
+    Some((first, last))
 }
 
-fn read_or_zero(rows: &Rows, name: &str, range: std::ops::Range<usize>, out: &mut [f32]) {
+fn read_or_zero(rows: &Rows, name: &str, range: Range<usize>, out: &mut [f32]) {
     match rows.channel_index(name) {
         Some(c) => rows.planes[c].read_f32(range, out),
         None => out.fill(0.0),
     }
 }
 
-/// Whether A is transparent black across row `y` in every selected layer:
-/// outside its data window, or each colour and alpha sample +0 with an
-/// alpha channel present.
-pub fn transparent_black(rows: &Rows, layers: &[Layer], y: i32) -> bool {
+/// The sample offsets of row `y` from A's first to its last pixel that is
+/// not transparent black in the selected layers (empty when A is transparent
+/// black all along). Transparent black: outside the data window, or every
+/// colour and alpha sample +0 with an alpha channel present.
+pub fn visible_columns(rows: &Rows, layers: &[Layer], y: i32) -> Range<usize> {
     if !rows.valid_row(y) {
-        return true;
+        return 0..0;
     }
-    layers.iter().all(|layer| {
-        layer.alphas.iter().any(|n| rows.channel_index(n).is_some())
-            && layer
-                .colours()
-                .chain(layer.alphas.iter().cloned())
-                .filter_map(|n| rows.channel_index(&n))
-                .all(|c| {
-                    let bytes = rows.planes[c].bytes(rows.row_range(y));
-                    bytes
-                        .chunks(64)
-                        .all(|chunk| chunk.iter().fold(0, |acc, &b| acc | b) == 0)
-                })
-    })
+    let mut span = rows.width..0;
+    for layer in layers {
+        if !layer.alphas.iter().any(|n| rows.channel_index(n).is_some()) {
+            return rows.valid_columns();
+        }
+        for c in layer
+            .colours()
+            .chain(layer.alphas.iter().cloned())
+            .filter_map(|n| rows.channel_index(&n))
+        {
+            let bytes = rows.planes[c].bytes(rows.row_range(y));
+            let size = rows.channels[c].sample_type.bytes_per_sample();
+            if let Some((first, last)) = nonzero_bytes(bytes) {
+                span = span.start.min(first / size)..span.end.max(last / size + 1);
+            }
+        }
+    }
+    if span.is_empty() {
+        0..0
+    } else {
+        span
+    }
 }

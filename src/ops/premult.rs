@@ -42,7 +42,7 @@ impl Op for Premult {
             // Every channel as it is, then the selected colours recomputed.
             out.copy_row_from(input, y);
             for layer in &layers {
-                layer.read_alpha(input, y, &mut alpha);
+                layer.read_alpha(input, y, 0, &mut alpha);
                 for name in layer.colours() {
                     let Some(c) = input.channel_index(&name) else {
                         continue;

@@ -87,7 +87,7 @@ impl Op for ZMerge {
                     }
                     None => {
                         alpha[i].resize(w, 0.0);
-                        rows.implicit_alpha(y, &mut alpha[i]);
+                        rows.implicit_alpha(y, 0, &mut alpha[i]);
                     }
                 }
                 for (k, name) in COLOURS.iter().enumerate() {

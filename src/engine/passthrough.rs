@@ -1,0 +1,159 @@
+//! Output blocks copied from an input's compressed chunks. Where the top
+//! inputs of a merge (or of a stack of them) are transparent black over a
+//! whole output block, the result is the bottom input's block bit for bit; if
+//! the two files share compression, channels and block grid, the output block
+//! is that input's chunk: checked to decompress, then written as it is, with
+//! no decode, composite or encode. On a CG element over a plate most blocks
+//! are such blocks.
+
+use super::decode::{decode_strip, InputCursor};
+use super::encode::IndexedChunk;
+use super::graph::{Graph, Node};
+use super::plan::FramePlan;
+use super::strip::Rows;
+use crate::error::Result;
+use exr::block::chunk::CompressedBlock;
+use exr::prelude::Compression;
+use rayon::prelude::*;
+use std::ops::Range;
+
+/// How a frame's output blocks can come from one input's chunks.
+pub struct PassThrough {
+    /// The input whose chunks are copied (the bottom of the merges).
+    pub source: usize,
+    /// Per merge from the output down: the merge node, the input its first
+    /// input reads, and its second input's node. All first inputs must be
+    /// transparent black over a block for it to pass.
+    tests: Vec<(usize, usize, usize)>,
+}
+
+/// An output block made of an input's chunk.
+struct PassedBlock {
+    /// The block's index in the output's offset table.
+    index: usize,
+    /// The input's chunk index.
+    chunk: usize,
+}
+
+impl PassThrough {
+    /// Whether `plan`'s output can take chunks from an input, and which.
+    pub fn find(graph: &Graph, plan: &FramePlan) -> Option<Self> {
+        let mut tests = Vec::new();
+        let mut node = graph.output();
+        let source = loop {
+            match &graph.nodes[node] {
+                Node::Input(i) if !tests.is_empty() => break *i,
+                Node::Op { op, inputs } if op.passes_second() && inputs.len() == 2 => {
+                    let Node::Input(first) = graph.nodes[inputs[0]] else {
+                        return None;
+                    };
+                    tests.push((node, first, inputs[1]));
+                    node = inputs[1];
+                }
+                _ => return None,
+            }
+        };
+        let file = plan.header_of(source);
+        let (out, window) = (&plan.header, plan.window());
+        let input = file.data_window();
+        let lines = out.compression.scan_lines_per_block() as i32;
+        let same = plan.deep[source].is_none()
+            && plan.windows[node] == input
+            && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
+            && file.compression == out.compression
+            && file.channels.list == out.channels.list
+            && (input.position.x(), input.size.width())
+                == (window.position.x(), window.size.width())
+            && (input.position.y() - window.position.y()) % lines == 0;
+        same.then_some(PassThrough { source, tests })
+    }
+
+    /// Decodes strip `rows` of every input but the source's chunks of the
+    /// blocks that pass, which come back checked, as output chunks.
+    pub fn decode(
+        &self,
+        plan: &FramePlan,
+        graph: &Graph,
+        cursors: &mut [InputCursor],
+        columns: (i32, usize),
+        rows: Range<i32>,
+    ) -> Result<(Vec<Rows>, Vec<IndexedChunk>)> {
+        let source = self.source;
+        let mut strips = decode_strip(
+            cursors,
+            columns,
+            rows.clone(),
+            |i| i != source,
+            |_, _| false,
+        )?;
+        let blocks = self.blocks(plan, graph, &strips, rows.clone());
+        let passed = |k: usize| blocks.iter().any(|b| b.chunk == k);
+        let mut own = decode_strip(cursors, columns, rows, |i| i == source, |_, k| passed(k))?;
+        strips[source] = own[source].take();
+        let strips = strips
+            .into_iter()
+            .map(|s| s.expect("every input decoded"))
+            .collect();
+        Ok((strips, self.chunks(plan, &blocks)?))
+    }
+
+    /// The output blocks within `rows` (whole blocks of the output's grid)
+    /// that are the source's chunks, given the strips of the other inputs.
+    fn blocks(
+        &self,
+        plan: &FramePlan,
+        graph: &Graph,
+        strips: &[Option<Rows>],
+        rows: Range<i32>,
+    ) -> Vec<PassedBlock> {
+        let window = plan.window();
+        let input = plan.header_of(self.source).data_window();
+        let lines = plan.header.compression.scan_lines_per_block() as i32;
+        let (top, bottom) = (window.position.y(), window.end().y());
+        let first = rows.start.max(top);
+        let first = top + (first - top + lines - 1) / lines * lines;
+        (first..rows.end.min(bottom))
+            .step_by(lines as usize)
+            .filter_map(|y0| {
+                let y1 = (y0 + lines).min(bottom);
+                // The input's chunk must hold exactly these rows.
+                let inside = y0 >= input.position.y() && y1 <= input.end().y();
+                let same_end = (y0 + lines).min(input.end().y()) == y1;
+                let hidden = self.tests.iter().all(|&(merge, first, second)| {
+                    let Node::Op { op, .. } = &graph.nodes[merge] else {
+                        return false;
+                    };
+                    let strip = strips[first]
+                        .as_ref()
+                        .expect("tested inputs are decoded first");
+                    op.hides_nothing(strip, &plan.channels[second], y0..y1)
+                });
+                (y1 <= rows.end && inside && same_end && hidden).then(|| PassedBlock {
+                    index: ((y0 - top) / lines) as usize,
+                    chunk: ((y0 - input.position.y()) / lines) as usize,
+                })
+            })
+            .collect()
+    }
+
+    /// The source's chunks for `blocks`, each checked to decompress, as
+    /// output chunks.
+    fn chunks(&self, plan: &FramePlan, blocks: &[PassedBlock]) -> Result<Vec<IndexedChunk>> {
+        let (file, part) = (&plan.inputs[self.source], plan.parts[self.source]);
+        blocks
+            .par_iter()
+            .map(|block| {
+                let mut chunk = file.checked_zip_chunk(part, block.chunk)?;
+                chunk.layer_index = 0;
+                debug_assert!(matches!(
+                    chunk.compressed_block,
+                    CompressedBlock::ScanLine(_)
+                ));
+                Ok(IndexedChunk {
+                    index: block.index,
+                    chunk,
+                })
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,149 @@
+//! Output blocks copied from the background's chunks where the foreground is
+//! transparent black (src/engine/passthrough.rs): the pixels equal the whole
+//! composite, those chunks are the background's bytes, and a damaged chunk
+//! is still refused.
+
+mod common;
+use common::*;
+use exr::block::chunk::CompressedBlock;
+use exr::prelude::{Compression, LineOrder};
+use exrcomp::io::reader::ExrFile;
+use std::path::{Path, PathBuf};
+
+const WIDTH: usize = 40;
+const HEIGHT: usize = 70;
+
+/// A random half RGBA image, transparent black outside rows `visible`.
+fn sparse(seed: u64, visible: std::ops::Range<usize>) -> Img {
+    let mut img = random_rgba(seed, 0, 0, WIDTH, HEIGHT, Kind::Half, false);
+    for y in (0..HEIGHT).filter(|y| !visible.contains(y)) {
+        for x in 0..WIDTH {
+            let i = img.index(x as i32, y as i32).unwrap();
+            img.channels.values_mut().for_each(|s| s.set_f32(i, 0.0));
+        }
+    }
+    img
+}
+
+fn write(dir: &Path, name: &str, img: &Img) -> PathBuf {
+    let path = dir.join(name);
+    write_image(&path, img, Compression::ZIP16, LineOrder::Increasing);
+    path
+}
+
+/// The compressed bytes of every chunk of `path`, in table order.
+fn chunks(path: &Path) -> Vec<Vec<u8>> {
+    let file = ExrFile::open(path, None).unwrap();
+    (0..file.header(0).chunk_count)
+        .map(|k| match file.read_chunk(0, k).unwrap().compressed_block {
+            CompressedBlock::ScanLine(block) => block.compressed_pixels_le,
+            _ => panic!("scanline chunks"),
+        })
+        .collect()
+}
+
+fn check_run(args: &[&str]) {
+    let out = run(args);
+    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+}
+
+#[test]
+fn blocks_under_a_transparent_foreground_are_the_backgrounds_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // Visible in rows 20..35: blocks 1 and 2 (rows 16..48) blend, blocks 0,
+    // 3 and 4 (the last one 6 rows) pass.
+    let a = write(d, "a.exr", &sparse(1, 20..35));
+    let b = write(
+        d,
+        "b.exr",
+        &random_rgba(2, 0, 0, WIDTH, HEIGHT, Kind::Half, true),
+    );
+    let out = d.join("out.exr");
+    check_run(&["over", s(&a), s(&b), "-o", s(&out), "--strip-rows", "16"]);
+    let reference = reference_merge("over", &read_image(&a), &read_image(&b), false, 1.0, &[""]);
+    assert_identical(&read_image(&out), &reference);
+    assert_peers_read(&out);
+    let (ours, theirs) = (chunks(&out), chunks(&b));
+    let same: Vec<bool> = ours.iter().zip(&theirs).map(|(o, t)| o == t).collect();
+    assert_eq!(
+        same,
+        [true, false, false, true, true],
+        "which chunks are B's bytes"
+    );
+
+    // Another output compression, or a window other than B's: nothing
+    // passes, and the pixels are the same.
+    let piz = d.join("piz.exr");
+    check_run(&["over", s(&a), s(&b), "-o", s(&piz), "--compression", "piz"]);
+    assert_identical(&read_image(&piz), &reference);
+    let shifted = d.join("shifted.exr");
+    let moved = random_rgba(3, 2, 0, WIDTH, HEIGHT, Kind::Half, true);
+    let moved_path = write(d, "moved.exr", &moved);
+    check_run(&["over", s(&a), s(&moved_path), "-o", s(&shifted)]);
+    let reference = reference_merge("over", &read_image(&a), &moved, false, 1.0, &[""]);
+    assert_identical(&read_image(&shifted), &reference);
+}
+
+#[test]
+fn a_stack_passes_where_every_layer_above_the_bottom_is_transparent() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let l1 = write(d, "l1.exr", &sparse(4, 3..10));
+    let l2 = write(d, "l2.exr", &sparse(5, 50..52));
+    let bg = write(
+        d,
+        "bg.exr",
+        &random_rgba(6, 0, 0, WIDTH, HEIGHT, Kind::Half, true),
+    );
+    let out = d.join("out.exr");
+    check_run(&["stack", s(&l1), s(&l2), s(&bg), "-o", s(&out)]);
+    let (i1, i2, ib) = (read_image(&l1), read_image(&l2), read_image(&bg));
+    let below = reference_merge("over", &i2, &ib, false, 1.0, &[""]);
+    assert_identical(
+        &read_image(&out),
+        &reference_merge("over", &i1, &below, false, 1.0, &[""]),
+    );
+    let same: Vec<bool> = chunks(&out)
+        .iter()
+        .zip(&chunks(&bg))
+        .map(|(o, t)| o == t)
+        .collect();
+    assert_eq!(same, [false, true, true, false, true]);
+}
+
+#[test]
+fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = sparse(7, 20..35);
+    let b = random_rgba(8, 0, 0, WIDTH, HEIGHT, Kind::Half, true);
+    write(d, "a.0001.exr", &a);
+    let bg = write(d, "b.0001.exr", &b);
+    // Flip a byte inside chunk 0's deflate stream (after its 8-byte header):
+    // the chunk still has its size, only decompressing finds the damage.
+    let file = ExrFile::open(&bg, None).unwrap();
+    let at = file.chunk_bytes(0, 0..1);
+    drop(file);
+    let mut bytes = std::fs::read(&bg).unwrap();
+    let middle = at.start + 8 + (at.end - at.start - 8) / 2;
+    bytes[middle] ^= 0x5a;
+    std::fs::write(&bg, bytes).unwrap();
+    let out = run(&[
+        "over",
+        s(&d.join("a.####.exr")),
+        s(&d.join("b.####.exr")),
+        "-o",
+        s(&d.join("out.####.exr")),
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    let message = stderr(&out);
+    let named = ["b.0001.exr", "(frame 1)", "chunk 0"]
+        .iter()
+        .all(|w| message.contains(w));
+    assert!(named, "{message}");
+    assert!(
+        !d.join("out.0001.exr").exists(),
+        "no output for a damaged input"
+    );
+}
