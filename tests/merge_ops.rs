@@ -61,6 +61,25 @@ fn every_operator_equals_the_reference_premultiplied_straight_and_mixed() {
 }
 
 #[test]
+fn inputs_wider_than_the_result_are_cut_to_its_columns() {
+    // Same rows, different columns: A's chunks are decoded straight into the
+    // strips of the intersection, starting 5 columns into each line.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for compression in [Compression::ZIP16, Compression::ZIP1] {
+        let a = random_rgba(31, 0, 0, 40, 37, Kind::Half, true);
+        let b = random_rgba(32, 5, 0, 25, 37, Kind::Float, false);
+        let (pa, pb) = (d.join("a.exr"), d.join("b.exr"));
+        write_image(&pa, &a, compression, LineOrder::Increasing);
+        write_image(&pb, &b, compression, LineOrder::Increasing);
+        for op in ["in", "over", "copy"] {
+            let ours = merge(d, op, &pa, &pb, &["--strip-rows", "16"]);
+            assert_identical(&ours, &reference_merge(op, &a, &b, false, 1.0, &[""]));
+        }
+    }
+}
+
+#[test]
 fn a_sparse_a_leaves_b_bit_for_bit_where_it_is_transparent_black() {
     // A visible only inside a disc and on one lone pixel, so rows have
     // transparent black on both sides, in the middle, and all along; B holds

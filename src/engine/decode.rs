@@ -3,12 +3,14 @@
 //! pages are released as soon as the rows are copied out.
 
 use super::deep_input::DeepInput;
-use super::strip::Rows;
+use super::strip::{Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
 use exr::block::UncompressedBlock;
 use exr::meta::attribute::IntegerBounds;
+use exr::prelude::Compression;
 use rayon::prelude::*;
+use std::mem::MaybeUninit;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -96,10 +98,18 @@ pub fn decode_strip(
     selected: impl Fn(usize) -> bool,
     skip: impl Fn(usize, usize) -> bool,
 ) -> Result<Vec<Option<Rows>>> {
+    // Straight into the planes only where every chunk of the strip is decoded.
+    let direct: Vec<bool> = inputs
+        .iter()
+        .enumerate()
+        .map(|(i, input)| {
+            input.direct(columns, &rows) && !input.chunks_for(&rows).any(|k| skip(i, k))
+        })
+        .collect();
     let jobs: Vec<(usize, usize)> = inputs
         .iter()
         .enumerate()
-        .filter(|(i, _)| selected(*i))
+        .filter(|(i, _)| selected(*i) && !direct[*i])
         .flat_map(|(i, input)| {
             let carried = input.carried.as_ref().map(|(k, _)| *k);
             input
@@ -123,11 +133,12 @@ pub fn decode_strip(
     }
     let mut strips = Vec::with_capacity(inputs.len());
     for (i, input) in inputs.iter_mut().enumerate() {
-        if !selected(i) {
-            strips.push(None);
-            continue;
-        }
-        strips.push(Some(input.strip(columns, &rows, &mut blocks[i])?));
+        let strip = match (selected(i), direct[i]) {
+            (false, _) => None,
+            (true, true) => Some(input.decode_direct(columns, &rows)?),
+            (true, false) => Some(input.strip(columns, &rows, &mut blocks[i])?),
+        };
+        strips.push(strip);
     }
     Ok(strips)
 }
@@ -172,6 +183,12 @@ impl InputCursor {
             Some((k, _)) => *k,
             None => needed.end,
         };
+        self.release_before(done);
+        Ok(strip)
+    }
+
+    /// Marks chunks below `done` as copied out and releases their pages.
+    fn release_before(&mut self, done: usize) {
         if done > self.done {
             let bytes = self.file.chunk_bytes(self.part, self.done..done);
             let span = match self.released.take() {
@@ -182,7 +199,91 @@ impl InputCursor {
             self.released = Some(span);
             self.done = done;
         }
-        Ok(strip)
+    }
+
+    /// Whether strip `rows` can be decoded straight into its planes: ZIP or
+    /// ZIPS chunks, none carried, that lie wholly inside the strip and cover
+    /// all its rows and columns (the usual case: the output's own grid).
+    fn direct(&self, columns: (i32, usize), rows: &Range<i32>) -> bool {
+        let header = self.file.header(self.part);
+        let w = self.window;
+        let (top, bottom) = (w.position.y(), w.end().y());
+        let lines = header.compression.scan_lines_per_block() as i32;
+        self.deep.is_none()
+            && self.carried.is_none()
+            && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)
+            && w.position.x() <= columns.0
+            && w.end().x() >= columns.0 + columns.1 as i32
+            && top <= rows.start
+            && bottom >= rows.end
+            && (rows.start - top) % lines == 0
+            && ((rows.end - top) % lines == 0 || rows.end == bottom)
+    }
+
+    /// Strip `rows` decoded straight into new planes, chunks in parallel:
+    /// each chunk's bytes are interleaved from its decompressed halves to
+    /// their rows, with no block buffer, copy or zero fill (see `direct`).
+    fn decode_direct(&mut self, columns: (i32, usize), rows: &Range<i32>) -> Result<Rows> {
+        let (file, part) = (&self.file, self.part);
+        let header = file.header(part);
+        let channels = header.channels.list.to_vec();
+        let sizes: Vec<usize> = channels
+            .iter()
+            .map(|c| c.sample_type.bytes_per_sample())
+            .collect();
+        let (width, height) = (columns.1, (rows.end - rows.start) as usize);
+        let in_width = self.window.size.width();
+        let line_bytes = header.channels.bytes_per_pixel * in_width;
+        let skip = (columns.0 - self.window.position.x()) as usize;
+        let lines = header.compression.scan_lines_per_block();
+        let chunks = self.chunks_for(rows);
+        // Chunk k starts `(k - first) * lines` rows into the strip.
+        let below = (self.window.end().y() - rows.start) as usize;
+        let chunk_lines = |k: usize| lines.min(below - (k - chunks.start) * lines);
+        let mut planes: Vec<Samples> = channels
+            .iter()
+            .map(|c| Samples::with_capacity(c.sample_type, width * height))
+            .collect();
+        // Per chunk, its rows of every plane.
+        let mut tasks: Vec<(usize, Vec<&mut [MaybeUninit<u8>]>)> =
+            chunks.clone().map(|k| (k, Vec::new())).collect();
+        for (plane, &size) in planes.iter_mut().zip(&sizes) {
+            let mut rest = &mut plane.unset_bytes()[..width * height * size];
+            for (k, slices) in tasks.iter_mut() {
+                let (mine, after) = rest.split_at_mut(chunk_lines(*k) * width * size);
+                slices.push(mine);
+                rest = after;
+            }
+            assert!(rest.is_empty(), "the chunks cover the strip");
+        }
+        tasks.into_par_iter().try_for_each(|(k, mut slices)| {
+            file.unpack_zip_chunk(part, k, |unpacked| {
+                for line in 0..chunk_lines(k) {
+                    let mut offset = line * line_bytes;
+                    for (slice, &size) in slices.iter_mut().zip(&sizes) {
+                        let row = width * size;
+                        let out = &mut slice[line * row..(line + 1) * row];
+                        unpacked.place(offset + skip * size, out);
+                        offset += in_width * size;
+                    }
+                }
+            })
+        })?;
+        for plane in &mut planes {
+            // SAFETY: the tasks wrote every row of every plane (asserted
+            // above: the chunks' rows are exactly the strip's).
+            unsafe { plane.set_len(width * height) };
+        }
+        self.release_before(chunks.end);
+        Ok(Rows {
+            x: columns.0,
+            y: rows.start,
+            width,
+            height,
+            channels,
+            planes,
+            valid: self.window,
+        })
     }
 }
 

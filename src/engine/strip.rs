@@ -3,6 +3,7 @@
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use half::f16;
 use half::slice::HalfFloatSliceExt;
+use std::mem::MaybeUninit;
 use std::ops::Range;
 
 /// Samples of one channel, row-major, in the channel's own type so that
@@ -20,6 +21,43 @@ impl Samples {
             SampleType::F16 => Samples::F16(vec![f16::ZERO; len]),
             SampleType::F32 => Samples::F32(vec![0.0; len]),
             SampleType::U32 => Samples::U32(vec![0; len]),
+        }
+    }
+
+    /// Room for `len` samples, none of them set yet (see `unset_bytes`).
+    pub fn with_capacity(kind: SampleType, len: usize) -> Self {
+        match kind {
+            SampleType::F16 => Samples::F16(Vec::with_capacity(len)),
+            SampleType::F32 => Samples::F32(Vec::with_capacity(len)),
+            SampleType::U32 => Samples::U32(Vec::with_capacity(len)),
+        }
+    }
+
+    /// The bytes of the room beyond the samples set, to be written.
+    pub fn unset_bytes(&mut self) -> &mut [MaybeUninit<u8>] {
+        fn bytes<T>(v: &mut Vec<T>) -> &mut [MaybeUninit<u8>] {
+            let spare = v.spare_capacity_mut();
+            let len = std::mem::size_of_val(spare);
+            // SAFETY: the same memory seen as bytes; any byte pattern may be
+            // written to it, and MaybeUninit<u8> has alignment 1.
+            unsafe { std::slice::from_raw_parts_mut(spare.as_mut_ptr().cast(), len) }
+        }
+        match self {
+            Samples::F16(v) => bytes(v),
+            Samples::F32(v) => bytes(v),
+            Samples::U32(v) => bytes(v),
+        }
+    }
+
+    /// Marks the first `len` samples of the room as set.
+    ///
+    /// # Safety
+    /// All their bytes must have been written through `unset_bytes`.
+    pub unsafe fn set_len(&mut self, len: usize) {
+        match self {
+            Samples::F16(v) => v.set_len(len),
+            Samples::F32(v) => v.set_len(len),
+            Samples::U32(v) => v.set_len(len),
         }
     }
 

@@ -204,6 +204,23 @@ impl ExrFile {
         Ok(chunk)
     }
 
+    /// Decompresses ZIP or ZIPS chunk `index` of `part` and hands its bytes,
+    /// in the file's line and channel order, to `f` (`zip::Unpacked`).
+    pub fn unpack_zip_chunk<R>(
+        &self,
+        part: usize,
+        index: usize,
+        f: impl FnOnce(&zip::Unpacked) -> R,
+    ) -> Result<R> {
+        let chunk = self.read_chunk(part, index)?;
+        let CompressedBlock::ScanLine(block) = &chunk.compressed_block else {
+            return Err(self.error(format!("chunk {index} is not a scanline block")));
+        };
+        let (_, expected) = block_size(self.header(part), block.y_coordinate);
+        zip::unpack(&block.compressed_pixels_le, expected, f)
+            .map_err(|m| self.error(format!("chunk {index} does not decompress: {m}")))
+    }
+
     /// Reads and decompresses chunk `index` of `part`.
     pub fn decode_chunk(&self, part: usize, index: usize) -> Result<UncompressedBlock> {
         let chunk = self.read_chunk(part, index)?;

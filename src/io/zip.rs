@@ -7,6 +7,7 @@
 use super::deflate;
 use libdeflater::Decompressor;
 use std::cell::RefCell;
+use std::mem::MaybeUninit;
 
 #[cfg(target_endian = "big")]
 compile_error!("the codecs here take native-endian samples to be little-endian");
@@ -50,6 +51,60 @@ pub fn decompress(compressed: &[u8], expected: usize) -> Result<Vec<u8>, String>
         let mut buffers = buffers.borrow_mut();
         Ok(untransform(inflate(compressed, expected, &mut buffers.0)?))
     })
+}
+
+/// A decompressed block whose predictor is undone but whose bytes are still
+/// split in halves (or a block stored raw): `place` interleaves any part of
+/// it straight to where it goes, with no whole-block buffer in between.
+pub enum Unpacked<'a> {
+    Raw(&'a [u8]),
+    Halves(&'a [u8], &'a [u8]),
+}
+
+impl Unpacked<'_> {
+    /// Writes the block's bytes `from..from + out.len()` (both even) to `out`.
+    pub fn place(&self, from: usize, out: &mut [MaybeUninit<u8>]) {
+        assert!(
+            from.is_multiple_of(2) && out.len().is_multiple_of(2),
+            "whole 2-byte pairs"
+        );
+        match *self {
+            Unpacked::Raw(raw) => write_bytes(out, &raw[from..from + out.len()]),
+            Unpacked::Halves(first, second) => {
+                let (start, n) = (from / 2, out.len() / 2);
+                interleave(&first[start..start + n], &second[start..start + n], out);
+            }
+        }
+    }
+}
+
+/// Decompresses a block of exactly `expected` bytes (an even count) and
+/// hands it to `f` as `Unpacked`.
+pub fn unpack<R>(
+    compressed: &[u8],
+    expected: usize,
+    f: impl FnOnce(&Unpacked) -> R,
+) -> Result<R, String> {
+    if !expected.is_multiple_of(2) {
+        return Err(format!("a block of {expected} bytes is not whole samples"));
+    }
+    if compressed.len() == expected {
+        return Ok(f(&Unpacked::Raw(compressed)));
+    }
+    SCRATCH.with(|buffers| {
+        let mut buffers = buffers.borrow_mut();
+        let transformed = inflate(compressed, expected, &mut buffers.0)?;
+        running_sum(transformed);
+        let (first, second) = transformed.split_at(expected / 2);
+        Ok(f(&Unpacked::Halves(first, second)))
+    })
+}
+
+/// Copies `bytes` into `out` (as long).
+fn write_bytes(out: &mut [MaybeUninit<u8>], bytes: &[u8]) {
+    for (o, &b) in out.iter_mut().zip(bytes) {
+        o.write(b);
+    }
 }
 
 /// Checks that a chunk's bytes decompress to exactly `expected` bytes,
@@ -131,8 +186,10 @@ pub fn untransform(transformed: &mut [u8]) -> Vec<u8> {
     let n = transformed.len();
     running_sum(transformed);
     let (first, second) = transformed.split_at(n.div_ceil(2));
-    let mut raw = vec![0u8; n];
-    interleave(first, second, &mut raw);
+    let mut raw = Vec::with_capacity(n);
+    interleave(first, second, &mut raw.spare_capacity_mut()[..n]);
+    // SAFETY: `interleave` wrote all `n` bytes.
+    unsafe { raw.set_len(n) };
     raw
 }
 
@@ -152,8 +209,10 @@ fn running_sum(bytes: &mut [u8]) {
     }
 }
 
-/// raw[2i] = first[i], raw[2i + 1] = second[i] (first may be one longer).
-fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
+/// raw[2i] = first[i], raw[2i + 1] = second[i] (first may be one longer);
+/// writes every byte of `raw`.
+fn interleave(first: &[u8], second: &[u8], raw: &mut [MaybeUninit<u8>]) {
+    assert_eq!(first.len() + second.len(), raw.len(), "halves fill raw");
     #[cfg(target_arch = "x86_64")]
     let done = {
         let done = second.len() / 16 * 16;
@@ -163,9 +222,9 @@ fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
     #[cfg(not(target_arch = "x86_64"))]
     let done = 0;
     for (i, out) in raw[2 * done..].chunks_mut(2).enumerate() {
-        out[0] = first[done + i];
+        out[0].write(first[done + i]);
         if let Some(odd) = out.get_mut(1) {
-            *odd = second[done + i];
+            odd.write(second[done + i]);
         }
     }
 }
@@ -174,6 +233,7 @@ fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
 #[cfg(target_arch = "x86_64")]
 mod simd {
     use std::arch::x86_64::*;
+    use std::mem::MaybeUninit;
 
     /// `bytes.len()` is a multiple of 16; returns the last sum.
     pub fn running_sum(bytes: &mut [u8], seed: u8) -> u8 {
@@ -243,7 +303,7 @@ mod simd {
 
     /// `first` and `second` have the same length, a multiple of 16; `raw`
     /// twice that.
-    pub fn interleave(first: &[u8], second: &[u8], raw: &mut [u8]) {
+    pub fn interleave(first: &[u8], second: &[u8], raw: &mut [MaybeUninit<u8>]) {
         let halves = first.chunks_exact(16).zip(second.chunks_exact(16));
         for ((a, b), out) in halves.zip(raw.chunks_exact_mut(32)) {
             // SAFETY: as above; each store stays inside its 32-byte `out`.
@@ -271,6 +331,28 @@ mod tests {
                 None => assert!(len < 64, "a repetitive block of {len} bytes must shrink"),
             }
         }
+    }
+
+    #[test]
+    fn unpacked_parts_are_the_decompressed_bytes() {
+        for len in [2usize, 32, 34, 66, 1000, 4098] {
+            let raw: Vec<u8> = (0..len).map(|i| (i * i % 251) as u8).collect();
+            let random: Vec<u8> = (0..len).map(|i| ((i * 2654435761) >> 13) as u8).collect();
+            for raw in [raw, random] {
+                let packed = compress(&raw, DEFAULT_LEVEL).unwrap_or_else(|| raw.clone());
+                for (from, n) in [(0, len), (0, 2), (len - 2, 2), (len / 4 * 2, len / 4 * 2)] {
+                    let mut out = vec![MaybeUninit::new(0xAAu8); n];
+                    unpack(&packed, len, |u| u.place(from, &mut out)).unwrap();
+                    // SAFETY: every byte was set, by 0xAA or by `place`.
+                    let out: Vec<u8> = out.iter().map(|b| unsafe { b.assume_init() }).collect();
+                    assert_eq!(out, raw[from..from + n], "length {len}, bytes {from}+{n}");
+                }
+            }
+        }
+        assert!(
+            unpack(&[1, 2, 3], 3, |_| ()).is_err(),
+            "odd sizes are not samples"
+        );
     }
 
     #[test]

@@ -7,6 +7,23 @@ use crate::engine::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
 
+/// Runs `$body` with `$op` a constant of `$value`'s operator: one copy of
+/// the loop per operator, its formula inlined, so that each vectorises.
+macro_rules! by_operator {
+    ($value:expr, $op:ident => $body:block) => {
+        by_operator!(@arms $value, $op, $body, Over Under In Out Atop Xor Plus Minus From
+            Multiply Screen Max Min Difference Divide Mask Stencil Copy)
+    };
+    (@arms $value:expr, $op:ident, $body:block, $($variant:ident)*) => {
+        match $value {
+            $(MergeOp::$variant => {
+                const $op: MergeOp = MergeOp::$variant;
+                $body
+            })*
+        }
+    };
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum MergeOp {
     Over,
@@ -75,6 +92,28 @@ impl MergeOp {
             Atop => ab,
             _ => self.colour(aa, aa, ab, ab),
         }
+    }
+
+    /// `colour` over a row, premultiplied and unmixed, into `a`; with
+    /// `keep_b`, B exactly where A is transparent black.
+    fn colour_row(self, a: &mut [f32], aa: &[f32], b: &[f32], ab: &[f32], keep_b: bool) {
+        by_operator!(self, OP => {
+            for x in 0..a.len() {
+                let r = OP.colour(a[x], aa[x], b[x], ab[x]);
+                a[x] = if keep_b && aa[x] == 0.0 && a[x] == 0.0 { b[x] } else { r };
+            }
+        })
+    }
+
+    /// `alpha` over a row, unmixed, into `ar`; with `keep_b`, B's where A's
+    /// is 0.
+    fn alpha_row(self, aa: &[f32], ab: &[f32], ar: &mut [f32], keep_b: bool) {
+        by_operator!(self, OP => {
+            for x in 0..ar.len() {
+                let r = OP.alpha(aa[x], ab[x]);
+                ar[x] = if keep_b && aa[x] == 0.0 { ab[x] } else { r };
+            }
+        })
     }
 
     /// Whether a transparent black A (colour and alpha 0) leaves B as it is.
@@ -251,12 +290,12 @@ impl Op for Merge {
             for (layer, (aa, ab, ar)) in layers.iter().zip(alphas.iter_mut()) {
                 layer.read_alpha(a, y, span.start, &mut aa[..n]);
                 layer.read_alpha(b, y, span.start, &mut ab[..n]);
-                for x in 0..n {
-                    ar[x] = if self.b_passes() && aa[x] == 0.0 {
-                        ab[x]
-                    } else {
-                        blend(self.op.alpha(aa[x], ab[x]), ab[x], self.mix)
-                    };
+                let keep_b = self.b_passes();
+                self.op.alpha_row(&aa[..n], &ab[..n], &mut ar[..n], keep_b);
+                if self.mix != 1.0 {
+                    for x in (0..n).filter(|&x| !(keep_b && aa[x] == 0.0)) {
+                        ar[x] = blend(ar[x], ab[x], self.mix);
+                    }
                 }
             }
             let dst = at(out);
@@ -268,8 +307,14 @@ impl Op for Merge {
                         let (aa, ab, ar) = &alphas[l];
                         read_or_zero(a, &name, at(a), &mut ca[..n]);
                         read_or_zero(b, &name, at(b), &mut cb[..n]);
-                        for x in 0..n {
-                            ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
+                        if self.straight || self.mix != 1.0 {
+                            for x in 0..n {
+                                ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
+                            }
+                        } else {
+                            let keep_b = self.b_passes();
+                            self.op
+                                .colour_row(&mut ca[..n], &aa[..n], &cb[..n], &ab[..n], keep_b);
                         }
                         out.planes[c].write_f32(dst.clone(), &ca[..n]);
                     }
