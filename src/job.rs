@@ -20,6 +20,7 @@ use clap::ValueEnum;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
 use std::collections::HashMap;
+use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
 
@@ -622,6 +623,12 @@ impl Op for Located {
     }
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         self.op.data_window(inputs)
+    }
+    fn passes_second(&self) -> bool {
+        self.op.passes_second()
+    }
+    fn hides_nothing(&self, first: &Rows, second: &[ChannelDescription], rows: Range<i32>) -> bool {
+        self.op.hides_nothing(first, second, rows)
     }
     fn compute(
         &self,

@@ -71,6 +71,11 @@ fn blocks_under_a_transparent_foreground_are_the_backgrounds_chunks() {
         [true, false, false, true, true],
         "which chunks are B's bytes"
     );
+    // The same merge as a job file node.
+    let job = d.join("over.toml");
+    std::fs::write(&job, job_file(&["a", "b"])).unwrap();
+    check_run(&["run", s(&job)]);
+    assert_eq!(chunks(&out), ours, "the job file writes the same bytes");
 
     // Another output compression, or a window other than B's: nothing
     // passes, and the pixels are the same.
@@ -146,4 +151,32 @@ fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
         !d.join("out.0001.exr").exists(),
         "no output for a damaged input"
     );
+}
+
+/// A job file writing `over` of nodes `inputs` (reading NAME.exr) to out.exr.
+fn job_file(inputs: &[&str]) -> String {
+    let mut names = inputs.to_vec();
+    names.dedup();
+    let reads: String = names
+        .iter()
+        .map(|n| format!("[[node]]\nname = \"{n}\"\nread = \"{n}.exr\"\n\n"))
+        .collect();
+    format!(
+        "{reads}[[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"{}\", \"{}\"]\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"out.exr\"\ninputs = [\"comp\"]\n",
+        inputs[0], inputs[1]
+    )
+}
+
+#[test]
+fn one_input_on_both_sides_of_a_merge_is_composited_not_passed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let img = sparse(9, 20..35);
+    write(d, "b.exr", &img);
+    let job = d.join("self.toml");
+    std::fs::write(&job, job_file(&["b", "b"])).unwrap();
+    check_run(&["run", s(&job)]);
+    let reference = reference_merge("over", &img, &img, false, 1.0, &[""]);
+    assert_identical(&read_image(&d.join("out.exr")), &reference);
 }

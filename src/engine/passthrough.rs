@@ -57,7 +57,9 @@ impl PassThrough {
         let (out, window) = (&plan.header, plan.window());
         let input = file.data_window();
         let lines = out.compression.scan_lines_per_block() as i32;
-        let same = plan.deep[source].is_none()
+        // The source is decoded after the inputs tested, so it is not one.
+        let same = tests.iter().all(|&(_, first, _)| first != source)
+            && plan.deep[source].is_none()
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
             && file.compression == out.compression
@@ -119,16 +121,18 @@ impl PassThrough {
                 // The input's chunk must hold exactly these rows.
                 let inside = y0 >= input.position.y() && y1 <= input.end().y();
                 let same_end = (y0 + lines).min(input.end().y()) == y1;
-                let hidden = self.tests.iter().all(|&(merge, first, second)| {
-                    let Node::Op { op, .. } = &graph.nodes[merge] else {
-                        return false;
-                    };
-                    let strip = strips[first]
-                        .as_ref()
-                        .expect("tested inputs are decoded first");
-                    op.hides_nothing(strip, &plan.channels[second], y0..y1)
-                });
-                (y1 <= rows.end && inside && same_end && hidden).then(|| PassedBlock {
+                let hidden = || {
+                    self.tests.iter().all(|&(merge, first, second)| {
+                        let Node::Op { op, .. } = &graph.nodes[merge] else {
+                            return false;
+                        };
+                        let strip = strips[first]
+                            .as_ref()
+                            .expect("tested inputs are decoded first");
+                        op.hides_nothing(strip, &plan.channels[second], y0..y1)
+                    })
+                };
+                (y1 <= rows.end && inside && same_end && hidden()).then(|| PassedBlock {
                     index: ((y0 - top) / lines) as usize,
                     chunk: ((y0 - input.position.y()) / lines) as usize,
                 })
