@@ -12,7 +12,6 @@ use super::graph::{Graph, Node};
 use super::plan::FramePlan;
 use super::strip::Rows;
 use crate::error::Result;
-use exr::block::chunk::CompressedBlock;
 use exr::prelude::Compression;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -147,15 +146,9 @@ impl PassThrough {
         blocks
             .par_iter()
             .map(|block| {
-                let mut chunk = file.checked_zip_chunk(part, block.chunk)?;
-                chunk.layer_index = 0;
-                debug_assert!(matches!(
-                    chunk.compressed_block,
-                    CompressedBlock::ScanLine(_)
-                ));
                 Ok(IndexedChunk {
                     index: block.index,
-                    chunk,
+                    chunk: file.checked_zip_chunk(part, block.chunk)?,
                 })
             })
             .collect()

@@ -4,7 +4,7 @@
 use super::zip;
 use crate::error::{Error, Result};
 use crate::guard::catch_panic;
-use exr::block::chunk::{Chunk, CompressedBlock};
+use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
@@ -193,15 +193,15 @@ impl ExrFile {
     }
 
     /// Chunk `index` of a ZIP or ZIPS `part`, checked to decompress (size and
-    /// checksum) but left compressed: for copying into an output as it is.
+    /// checksum) but left compressed, as the chunk of a single-part output.
     pub fn checked_zip_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
-        let chunk = self.read_chunk(part, index)?;
-        if let CompressedBlock::ScanLine(block) = &chunk.compressed_block {
-            let (_, expected) = block_size(self.header(part), block.y_coordinate);
-            zip::verify(&block.compressed_pixels_le, expected)
-                .map_err(|m| self.error(format!("chunk {index} does not decompress: {m}")))?;
-        }
-        Ok(chunk)
+        let (block, expected) = self.zip_chunk(part, index)?;
+        zip::verify(&block.compressed_pixels_le, expected)
+            .map_err(|m| self.undecodable(index, m))?;
+        Ok(Chunk {
+            layer_index: 0,
+            compressed_block: CompressedBlock::ScanLine(block),
+        })
     }
 
     /// Decompresses ZIP or ZIPS chunk `index` of `part` and hands its bytes,
@@ -212,13 +212,23 @@ impl ExrFile {
         index: usize,
         f: impl FnOnce(&zip::Unpacked) -> R,
     ) -> Result<R> {
-        let chunk = self.read_chunk(part, index)?;
-        let CompressedBlock::ScanLine(block) = &chunk.compressed_block else {
+        let (block, expected) = self.zip_chunk(part, index)?;
+        zip::unpack(&block.compressed_pixels_le, expected, f)
+            .map_err(|m| self.undecodable(index, m))
+    }
+
+    /// Scanline chunk `index` of `part` and the bytes it decompresses to.
+    fn zip_chunk(&self, part: usize, index: usize) -> Result<(CompressedScanLineBlock, usize)> {
+        let CompressedBlock::ScanLine(block) = self.read_chunk(part, index)?.compressed_block
+        else {
             return Err(self.error(format!("chunk {index} is not a scanline block")));
         };
         let (_, expected) = block_size(self.header(part), block.y_coordinate);
-        zip::unpack(&block.compressed_pixels_le, expected, f)
-            .map_err(|m| self.error(format!("chunk {index} does not decompress: {m}")))
+        Ok((block, expected))
+    }
+
+    fn undecodable(&self, index: usize, message: impl std::fmt::Display) -> Error {
+        self.error(format!("chunk {index} does not decompress: {message}"))
     }
 
     /// Reads and decompresses chunk `index` of `part`.
@@ -235,9 +245,7 @@ impl ExrFile {
                 let data = if packed.len() == expected {
                     packed.clone()
                 } else {
-                    zip::decompress(packed, expected).map_err(|m| {
-                        self.error(format!("chunk {index} does not decompress: {m}"))
-                    })?
+                    zip::decompress(packed, expected).map_err(|m| self.undecodable(index, m))?
                 };
                 UncompressedBlock {
                     index: BlockIndex {

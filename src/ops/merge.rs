@@ -256,28 +256,26 @@ impl Op for Merge {
         let w = columns.len();
         let mut alphas = vec![(vec![0.0f32; w], vec![0.0f32; w], vec![0.0f32; w]); layers.len()];
         let (mut ca, mut cb) = (vec![0.0f32; w], vec![0.0f32; w]);
+        let keep_b = self.b_passes();
         for y in out.valid_rows() {
             // Where A is transparent black, B passes as it is (bit for bit);
             // only the columns between A's first and last visible pixels blend.
-            let span = if self.b_passes() {
+            let span = if keep_b {
                 let s = visible_columns(a, &layers, y);
                 s.start.max(columns.start)..s.end.min(columns.end).max(columns.start)
             } else {
                 columns.clone()
             };
-            let (span, sides) = if span.is_empty() {
-                (
-                    columns.start..columns.start,
-                    [columns.clone(), columns.end..columns.end],
-                )
+            // An empty span sits at the end, so the side before it is the row.
+            let span = if span.is_empty() {
+                columns.end..columns.end
             } else {
-                (
-                    span.clone(),
-                    [columns.start..span.start, span.end..columns.end],
-                )
+                span
             };
-            for side in sides.into_iter().filter(|s| !s.is_empty()) {
-                pass_b(out, b, &roles, &layers, y, side, &mut cb);
+            for side in [columns.start..span.start, span.end..columns.end] {
+                if !side.is_empty() {
+                    pass_b(out, b, &roles, &layers, y, side, &mut cb);
+                }
             }
             if span.is_empty() {
                 continue;
@@ -290,7 +288,6 @@ impl Op for Merge {
             for (layer, (aa, ab, ar)) in layers.iter().zip(alphas.iter_mut()) {
                 layer.read_alpha(a, y, span.start, &mut aa[..n]);
                 layer.read_alpha(b, y, span.start, &mut ab[..n]);
-                let keep_b = self.b_passes();
                 self.op.alpha_row(&aa[..n], &ab[..n], &mut ar[..n], keep_b);
                 if self.mix != 1.0 {
                     for x in (0..n).filter(|&x| !(keep_b && aa[x] == 0.0)) {
@@ -312,7 +309,6 @@ impl Op for Merge {
                                 ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
                             }
                         } else {
-                            let keep_b = self.b_passes();
                             self.op
                                 .colour_row(&mut ca[..n], &aa[..n], &cb[..n], &ab[..n], keep_b);
                         }
