@@ -52,17 +52,17 @@ impl PassThrough {
                 _ => return None,
             }
         };
-        let file = plan.header_of(source);
+        let source_header = plan.header_of(source);
         let (out, window) = (&plan.header, plan.window());
-        let input = file.data_window();
+        let input = source_header.data_window();
         let lines = out.compression.scan_lines_per_block() as i32;
         // The source is decoded after the inputs tested, so it is not one.
         let same = tests.iter().all(|&(_, first, _)| first != source)
             && plan.deep[source].is_none()
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
-            && file.compression == out.compression
-            && file.channels.list == out.channels.list
+            && source_header.compression == out.compression
+            && source_header.channels.list == out.channels.list
             && (input.position.x(), input.size.width())
                 == (window.position.x(), window.size.width())
             && (input.position.y() - window.position.y()) % lines == 0;

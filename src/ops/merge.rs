@@ -411,7 +411,7 @@ fn read_or_zero(rows: &Rows, name: &str, range: Range<usize>, out: &mut [f32]) {
 /// not transparent black in the selected layers (empty when A is transparent
 /// black all along). Transparent black: outside the data window, or every
 /// colour and alpha sample +0 with an alpha channel present.
-pub fn visible_columns(rows: &Rows, layers: &[Layer], y: i32) -> Range<usize> {
+fn visible_columns(rows: &Rows, layers: &[Layer], y: i32) -> Range<usize> {
     if !rows.valid_row(y) {
         return 0..0;
     }
