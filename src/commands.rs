@@ -13,6 +13,7 @@ use crate::farm;
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::parts::split_part;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
+use crate::io::overwrite::refuse_overwriting;
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::blur;
 use crate::ops::defocus::{Aperture, Defocus};
@@ -237,7 +238,11 @@ pub fn run(command: Command) -> Result<()> {
         Command::Dilate(morph) => morphology(true, morph),
         Command::Premult(args) => premult(false, args),
         Command::Unpremult(args) => premult(true, args),
-        Command::Stitch { bands, output } => crate::io::stitch::stitch(&bands, &output),
+        Command::Stitch { bands, output } => {
+            FramePattern::output(&output.to_string_lossy())?;
+            refuse_overwriting(bands.clone(), [(None, output.clone())])?;
+            crate::io::stitch::stitch(&bands, &output)
+        }
         Command::Farm { farm } => {
             let (Farm::Openjd(job) | Farm::Opencue(job)) = &farm;
             let args = farm::absolute_args(&job.command, &working_folder()?)?;
@@ -291,7 +296,10 @@ pub fn run(command: Command) -> Result<()> {
             let graph = Graph::chain(1, Vec::new());
             let layers = LayerArgs::default();
             let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
-            job.merged[0] = inputs[1..].iter().map(|p| FramePattern::parse(p)).collect();
+            job.merged[0] = inputs[1..]
+                .iter()
+                .map(|p| FramePattern::parse(p))
+                .collect::<Result<_>>()?;
             run_job(&job, "deepmerge", &run, summary)
         }
         Command::Transcode { input, output, run } => {
@@ -324,7 +332,7 @@ pub fn run(command: Command) -> Result<()> {
                 origin,
                 pixel_type,
             };
-            let output = FramePattern::parse(&output);
+            let output = FramePattern::output(&output)?;
             let frames = match &run.frames {
                 Some(text) => parse_frame_list(text)?,
                 None => vec![1],
@@ -406,40 +414,31 @@ fn input_job(
     layers: &LayerArgs,
     run: &RunArgs,
 ) -> Result<(Job, Summary)> {
-    let (inputs, parts): (Vec<FramePattern>, Vec<Option<String>>) = texts
-        .iter()
-        .map(|text| {
-            let (path, part) = split_part(text);
-            (
-                FramePattern::parse(path),
-                part.map(str::to_string).or_else(|| layers.part.clone()),
-            )
-        })
-        .unzip();
-    let output = FramePattern::parse(output);
+    let mut inputs = Vec::new();
+    let mut parts = Vec::new();
+    for text in texts {
+        let (path, part) = split_part(text);
+        inputs.push(FramePattern::parse(path)?);
+        parts.push(part.map(str::to_string).or_else(|| layers.part.clone()));
+    }
+    let output = FramePattern::output(output)?;
     let frames = match &run.frames {
         Some(text) => parse_frame_list(text)?,
-        None if inputs[0].is_sequence() => {
-            let found = inputs[0].frames_on_disk()?;
-            if found.is_empty() {
+        // Every frame from the first on disk to the last: a gap between them
+        // is a missing frame like any other, for `--missing` to decide.
+        None if inputs[0].is_sequence() => match inputs[0].frames_on_disk()?[..] {
+            [first, .., last] => (first..=last).collect(),
+            [only] => vec![only],
+            [] => {
                 return Err(Error::new(
                     Kind::Input,
                     format!("no frames of {} found", inputs[0].display()),
-                ));
+                ))
             }
-            found
-        }
+        },
         None => vec![1],
     };
     check_frame_count(&frames, &output)?;
-    for input in &inputs {
-        if frames.iter().any(|&f| input.path(f) == output.path(f)) {
-            return Err(Error::usage(format!(
-                "the output {} would overwrite an input",
-                output.display()
-            )));
-        }
-    }
     let resolved = resolve(&inputs, &frames, run.missing)?;
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
@@ -556,6 +555,8 @@ fn run_with_progress(
     run: &RunArgs,
     summary: Summary,
 ) -> Result<(Report, Summary)> {
+    let (reads, writes) = job.files();
+    refuse_overwriting(reads, writes)?;
     let folders: BTreeSet<PathBuf> = job
         .frames
         .iter()
@@ -672,7 +673,7 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         };
         let job = plate_job(
             plate,
-            FramePattern::parse(&pattern(name)),
+            FramePattern::output(&pattern(name))?,
             frames.clone(),
             &plates,
         )?;

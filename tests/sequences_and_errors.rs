@@ -18,19 +18,27 @@ fn entries(dir: &Path) -> Vec<String> {
 }
 
 #[test]
-fn frames_default_to_those_on_disk_and_printf_patterns_work() {
+fn frames_default_to_those_on_disk_gaps_included_and_printf_patterns_work() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     write_sequence(d, "fg", [7, 8, 10], 0);
     write_sequence(d, "bg", [7, 8, 9, 10], 100);
-    let out = run(&[
-        "over",
-        s(&d.join("fg.%04d.exr")),
-        s(&d.join("bg.####.exr")),
-        "-o",
-        s(&d.join("out/c.####.exr")),
-        "-q",
-    ]);
+    let (fg, bg, output) = (
+        d.join("fg.%04d.exr"),
+        d.join("bg.####.exr"),
+        d.join("out/c.####.exr"),
+    );
+    let over = |extra: &[&str]| {
+        let mut args = vec!["over", s(&fg), s(&bg), "-o", s(&output), "-q"];
+        args.extend_from_slice(extra);
+        run(&args)
+    };
+    // The gap at 9 is a missing frame, listed before any work.
+    let out = over(&[]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    assert!(stderr(&out).contains("missing frames 9"), "{}", stderr(&out));
+    assert!(!d.join("out").exists());
+    let out = over(&["--missing", "skip"]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert_eq!(
         entries(&d.join("out")),
@@ -42,6 +50,67 @@ fn frames_default_to_those_on_disk_and_printf_patterns_work() {
         false,
     );
     assert_identical(&read_image(&d.join("out/c.0010.exr")), &expected);
+}
+
+/// Every spelling of an input as the output is refused before any work,
+/// naming both, in commands, job files and stitch; the inputs stay as they were.
+#[test]
+fn an_output_naming_an_input_by_any_spelling_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "bg", [1, 2], 0);
+    write_sequence(d, "fg", [1, 2], 10);
+    std::os::unix::fs::symlink(d, d.join("self")).unwrap();
+    std::fs::create_dir(d.join("here")).unwrap();
+    std::os::unix::fs::symlink(d.join("bg.0001.exr"), d.join("link.exr")).unwrap();
+    let before = std::fs::read(d.join("bg.0001.exr")).unwrap();
+    let refused = |args: &[&str]| {
+        let out = exrcomp().args(args).current_dir(d.join("here")).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("refusing to overwrite an input"),
+            "{args:?}: {}",
+            stderr(&out)
+        );
+    };
+    let (fg1, bg1) = (d.join("fg.0001.exr"), d.join("bg.0001.exr"));
+    let (fg1, bg1) = (s(&fg1), s(&bg1));
+    refused(&["over", fg1, bg1, "-o", "../bg.0001.exr"]);
+    refused(&["over", fg1, bg1, "-o", "./../self/bg.0001.exr"]);
+    refused(&["over", fg1, bg1, "-o", bg1]);
+    refused(&["over", fg1, s(&d.join("link.exr")), "-o", "../bg.0001.exr"]);
+    refused(&["over", fg1, "../link.exr", "-o", "../self/link.exr"]);
+    refused(&["over", "../fg.####.exr", "../bg.####.exr", "-o", "../self/bg.####.exr"]);
+    refused(&["blur", "../bg.####.exr", "-o", "../here/../bg.####.exr", "--radius", "1"]);
+    // Another pattern that reaches an input's file at another frame.
+    refused(&["transcode", "../bg.####.exr", "-o", "../bg.000#.exr", "--frames", "1"]);
+    refused(&["stitch", fg1, bg1, "-o", "../self/bg.0001.exr"]);
+    std::fs::write(
+        d.join("job.toml"),
+        "[[node]]\nname = \"bg\"\nread = \"bg.####.exr\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"./self/bg.####.exr\"\ninputs = [\"bg\"]\n",
+    )
+    .unwrap();
+    refused(&["run", "../job.toml"]);
+    assert_eq!(std::fs::read(d.join("bg.0001.exr")).unwrap(), before);
+}
+
+#[test]
+fn outputs_must_be_exr_and_patterns_sane() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "bg", [1], 0);
+    for (output, text) in [
+        ("x.jpg", "does not end in .exr"),
+        ("x.####.png", "does not end in .exr"),
+        ("out/b.%099999d.exr", "at most 20"),
+    ] {
+        let (input, output_path) = (d.join("bg.####.exr"), d.join(output));
+        let out = run(&["transcode", s(&input), "-o", s(&output_path)]);
+        assert_eq!(out.status.code(), Some(2), "{output}: {}", stderr(&out));
+        assert!(stderr(&out).contains(text), "{output}: {}", stderr(&out));
+    }
+    assert_eq!(entries(d), ["bg.0001.exr"]);
 }
 
 #[test]
@@ -64,6 +133,30 @@ fn frame_lists_and_steps_select_frames() {
         entries(&d.join("o")),
         ["x.1.exr", "x.3.exr", "x.5.exr", "x.6.exr"]
     );
+    // Nuke's step, and the slips refused with an example.
+    let frames = |list: &str| {
+        let out = run(&[
+            "transcode",
+            s(&d.join("fg.####.exr")),
+            "-o",
+            s(&d.join("n/x.#.exr")),
+            "--frames",
+            list,
+            "-q",
+        ]);
+        (out.status.code(), stderr(&out))
+    };
+    assert_eq!(frames("2-6x2").0, Some(0));
+    assert_eq!(entries(&d.join("n")), ["x.2.exr", "x.4.exr", "x.6.exr"]);
+    for (list, text) in [
+        ("1:5", "1001-1100x2"),
+        ("1,1,3", "frame 1 is listed twice"),
+        ("5-1", "runs backwards: write 1-5"),
+    ] {
+        let (code, message) = frames(list);
+        assert_eq!(code, Some(2), "{list}: {message}");
+        assert!(message.contains(text), "{list}: {message}");
+    }
 }
 
 #[test]
@@ -179,7 +272,7 @@ fn usage_errors_exit_2_and_bad_inputs_exit_3() {
         (
             vec!["over", s(&fg), s(&fg), "-o", s(&seq), "--frames", "9-1"],
             2,
-            "bad frame range",
+            "runs backwards",
         ),
         (
             vec![

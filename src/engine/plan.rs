@@ -81,6 +81,23 @@ pub enum HeaderBase {
 }
 
 impl Job {
+    /// Every file the job reads, and every file it writes with its frame.
+    pub fn files(&self) -> (Vec<PathBuf>, Vec<(Option<i64>, PathBuf)>) {
+        let mut reads = Vec::new();
+        let mut writes = Vec::new();
+        for sources in &self.frames {
+            for (input, source) in self.inputs.iter().zip(&sources.inputs) {
+                reads.push(input.path(source.file_frame()));
+            }
+            for merged in self.merged.iter().flatten() {
+                reads.push(merged.path(sources.frame));
+            }
+            let frame = self.frame_label(sources.frame);
+            writes.push((frame, self.output.path(sources.frame)));
+        }
+        (reads, writes)
+    }
+
     /// Frame numbers appear in messages only for sequences.
     pub fn frame_label(&self, frame: i64) -> Option<i64> {
         let sequence = self.output.is_sequence() || self.inputs.iter().any(|p| p.is_sequence());

@@ -2,6 +2,7 @@
 
 pub mod deep;
 pub mod deflate;
+pub mod overwrite;
 pub mod parts;
 pub mod reader;
 pub mod sequence;

@@ -14,8 +14,9 @@ pub struct FramePattern {
 
 impl FramePattern {
     /// `####` stands for one zero-padded digit per `#`; `%0Nd` and `%d` as in printf.
-    /// The last placeholder in the text is the frame number.
-    pub fn parse(text: &str) -> Self {
+    /// The last placeholder in the text is the frame number, padded to at most
+    /// `MAX_PADDING` digits (a frame number never has more).
+    pub fn parse(text: &str) -> Result<Self> {
         let hashes = text.rfind('#').map(|end| {
             let start = text[..end].trim_end_matches('#').len();
             (start, end + 1, end + 1 - start)
@@ -25,7 +26,12 @@ impl FramePattern {
             (Some(h), Some(p)) => Some(if h.0 > p.0 { h } else { p }),
             (h, p) => h.or(p),
         };
-        match placeholder {
+        Ok(match placeholder {
+            Some((_, _, padding)) if padding > MAX_PADDING => {
+                return Err(Error::usage(format!(
+                    "'{text}' pads frame numbers to {padding} digits; at most {MAX_PADDING} (#### or %04d)"
+                )))
+            }
             Some((start, end, padding)) => FramePattern {
                 prefix: text[..start].to_string(),
                 suffix: text[end..].to_string(),
@@ -36,6 +42,28 @@ impl FramePattern {
                 suffix: String::new(),
                 padding: None,
             },
+        })
+    }
+
+    /// A pattern to write: as `parse`, and it must name EXR files, the one
+    /// format exrcomp writes.
+    pub fn output(text: &str) -> Result<Self> {
+        let pattern = Self::parse(text)?;
+        let end = pattern.suffix_or_name().as_bytes();
+        let exr = end.len() >= 4 && end[end.len() - 4..].eq_ignore_ascii_case(b".exr");
+        if !exr {
+            return Err(Error::usage(format!(
+                "the output '{text}' does not end in .exr: exrcomp writes OpenEXR files only"
+            )));
+        }
+        Ok(pattern)
+    }
+
+    /// The text after the frame number, or the whole name of a plain file.
+    fn suffix_or_name(&self) -> &str {
+        match self.padding {
+            Some(_) => &self.suffix,
+            None => &self.prefix,
         }
     }
 
@@ -86,6 +114,9 @@ impl FramePattern {
     }
 }
 
+/// More digits than any i64 frame number has.
+const MAX_PADDING: usize = 20;
+
 /// `%d` or `%0Nd`: (start, end, padding).
 fn find_printf(text: &str) -> Option<(usize, usize, usize)> {
     let mut found = None;
@@ -93,7 +124,11 @@ fn find_printf(text: &str) -> Option<(usize, usize, usize)> {
         let rest = &text[start + 1..];
         let digits = rest.len() - rest.trim_start_matches(|c: char| c.is_ascii_digit()).len();
         if rest[digits..].starts_with('d') {
-            let padding = rest[..digits].parse().unwrap_or(1).max(1);
+            // `%d` is unpadded; a number too long to parse is over the limit.
+            let padding = match digits {
+                0 => 1,
+                _ => rest[..digits].parse().unwrap_or(usize::MAX).max(1),
+            };
             found = Some((start, start + 2 + digits, padding));
         }
     }
@@ -111,36 +146,56 @@ fn parse_frame_digits(number: &str, width: usize) -> Option<i64> {
     (format!("{:0width$}", frame) == number).then_some(frame)
 }
 
-/// Parses `A`, `A-B`, `A-B:STEP` and comma-separated lists of those.
+/// Most frames a list may hold.
+const MAX_FRAMES: usize = 10_000_000;
+
+/// Parses `A`, `A-B`, `A-BxSTEP` (Nuke's), `A-B:STEP` and comma-separated
+/// lists of those. A frame listed twice and a range that runs backwards are
+/// errors: either would be a slip, and a frame written twice races itself.
 pub fn parse_frame_list(text: &str) -> Result<Vec<i64>> {
     let mut frames = Vec::new();
+    let mut seen = std::collections::HashSet::new();
     for item in text.split(',').map(str::trim) {
         let bad = || {
             Error::usage(format!(
-                "bad frame range '{item}' (expected A, A-B or A-B:STEP)"
+                "bad frame range '{item}': write 1001, 1001-1100, 1001-1100x2 or 1001-1100:2"
             ))
         };
-        let (range, step) = match item.split_once(':') {
+        let (range, step) = match item.split_once(['x', ':']) {
             Some((range, step)) => (range, step.trim().parse::<i64>().map_err(|_| bad())?),
             None => (item, 1),
         };
-        if step < 1 {
-            return Err(bad());
-        }
         // A '-' after the first character separates the ends; a leading one is a sign.
         let (first, last) = match range.char_indices().skip(1).find(|&(_, c)| c == '-') {
             Some((dash, _)) => (&range[..dash], &range[dash + 1..]),
+            // A step needs a range to step over.
+            None if range.len() < item.len() => return Err(bad()),
             None => (range, range),
         };
         let first: i64 = first.trim().parse().map_err(|_| bad())?;
         let last: i64 = last.trim().parse().map_err(|_| bad())?;
-        if last < first {
+        if step < 1 {
             return Err(bad());
         }
-        if (last - first) / step >= 10_000_000 {
-            return Err(Error::usage(format!("frame range '{item}' is too long")));
+        if last < first {
+            return Err(Error::usage(format!(
+                "frame range '{item}' runs backwards: write {last}-{first}"
+            )));
         }
-        frames.extend((first..=last).step_by(step as usize));
+        let count = (last.abs_diff(first) / step as u64).saturating_add(1);
+        if count > (MAX_FRAMES - frames.len()) as u64 {
+            return Err(Error::usage(format!(
+                "frame list '{text}' has more than {MAX_FRAMES} frames"
+            )));
+        }
+        for frame in (first..=last).step_by(step as usize) {
+            if !seen.insert(frame) {
+                return Err(Error::usage(format!(
+                    "frame {frame} is listed twice in '{text}'"
+                )));
+            }
+            frames.push(frame);
+        }
     }
     Ok(frames)
 }
@@ -170,11 +225,11 @@ mod tests {
 
     #[test]
     fn hashes_pad_one_digit_each() {
-        let p = FramePattern::parse("shots/fg.####.exr");
+        let p = FramePattern::parse("shots/fg.####.exr").unwrap();
         assert_eq!(p.path(7), PathBuf::from("shots/fg.0007.exr"));
         assert_eq!(p.path(12345), PathBuf::from("shots/fg.12345.exr"));
         assert_eq!(
-            FramePattern::parse("a.#.exr").path(42),
+            FramePattern::parse("a.#.exr").unwrap().path(42),
             PathBuf::from("a.42.exr")
         );
     }
@@ -182,22 +237,40 @@ mod tests {
     #[test]
     fn printf_patterns() {
         assert_eq!(
-            FramePattern::parse("x.%04d.exr").path(5),
+            FramePattern::parse("x.%04d.exr").unwrap().path(5),
             PathBuf::from("x.0005.exr")
         );
         assert_eq!(
-            FramePattern::parse("x.%d.exr").path(5),
+            FramePattern::parse("x.%d.exr").unwrap().path(5),
             PathBuf::from("x.5.exr")
         );
         assert_eq!(
-            FramePattern::parse("x.%04d.exr").path(-5),
+            FramePattern::parse("x.%04d.exr").unwrap().path(-5),
             PathBuf::from("x.-005.exr")
         );
     }
 
     #[test]
+    fn padding_is_bounded() {
+        assert!(FramePattern::parse("b.%099999d.exr").is_err());
+        assert!(FramePattern::parse("b.%0999999999999999999999d.exr").is_err());
+        assert!(FramePattern::parse(&format!("b.{}.exr", "#".repeat(21))).is_err());
+        assert!(FramePattern::parse("b.%020d.exr").is_ok());
+    }
+
+    #[test]
+    fn outputs_must_be_exr() {
+        assert!(FramePattern::output("x.jpg").is_err());
+        assert!(FramePattern::output("x.####.png").is_err());
+        assert!(FramePattern::output("x.exr.tmp").is_err());
+        assert!(FramePattern::output("x.####.EXR").is_ok());
+        assert!(FramePattern::output("x.%04d.exr").is_ok());
+        assert!(FramePattern::output("dir.exr/x").is_err());
+    }
+
+    #[test]
     fn plain_names_are_not_sequences() {
-        let p = FramePattern::parse("plate.exr");
+        let p = FramePattern::parse("plate.exr").unwrap();
         assert!(!p.is_sequence());
         assert_eq!(p.path(1001), PathBuf::from("plate.exr"));
     }
@@ -223,9 +296,24 @@ mod tests {
             vec![1001, 1005, 1006]
         );
         assert_eq!(parse_frame_list("-2-1").unwrap(), vec![-2, -1, 0, 1]);
-        assert!(parse_frame_list("5-1").is_err());
+        assert_eq!(parse_frame_list("1-9x4").unwrap(), vec![1, 5, 9]);
+        assert_eq!(parse_frame_list("-9--5x2").unwrap(), vec![-9, -7, -5]);
         assert!(parse_frame_list("1-5:0").is_err());
         assert!(parse_frame_list("abc").is_err());
+        assert!(parse_frame_list("").is_err());
+    }
+
+    #[test]
+    fn frame_list_slips_are_refused() {
+        let message = |text| parse_frame_list(text).unwrap_err().message;
+        assert!(message("5-1").contains("runs backwards: write 1-5"));
+        assert!(message("1001:1005").contains("1001-1100x2"));
+        assert!(message("1001x2").contains("1001-1100x2"));
+        assert!(message("1001,1001,1003").contains("frame 1001 is listed twice"));
+        assert!(message("1-10,5").contains("frame 5 is listed twice"));
+        assert!(message("1-10y2").contains("bad frame range"));
+        assert!(message("0-99999999").contains("more than"));
+        assert!(message(&format!("{}-{}", i64::MIN, i64::MAX)).contains("more than"));
     }
 
     #[test]
