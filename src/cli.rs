@@ -1,5 +1,6 @@
 //! The command line.
 
+use crate::params::*;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -11,7 +12,7 @@ use std::path::PathBuf;
 )]
 pub struct Cli {
     /// Worker threads (default: one per core).
-    #[arg(long, global = true)]
+    #[arg(long, global = true, value_parser = crate::params::parse_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -38,7 +39,7 @@ pub enum Command {
         /// Bottom input: its header, display window and other channels are kept.
         b: String,
         /// Blend the result with B: 0 gives B, 1 the result.
-        #[arg(long, default_value_t = 1.0, value_parser = parse_mix)]
+        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| MIX.parse::<f32>(t))]
         mix: f32,
         #[command(flatten)]
         with: Composite,
@@ -60,7 +61,7 @@ pub enum Command {
     Blur {
         #[command(flatten)]
         one: OneInput,
-        #[arg(long, value_parser = clap::value_parser!(u32).range(0..=4096))]
+        #[arg(long, value_parser = |t: &str| BLUR_RADIUS.parse::<u32>(t))]
         radius: u32,
         #[arg(long, value_enum, default_value = "gaussian")]
         filter: crate::ops::blur::Filter,
@@ -71,14 +72,14 @@ pub enum Command {
         #[command(flatten)]
         one: OneInput,
         /// Depth in focus.
-        #[arg(long)]
+        #[arg(long, value_parser = |t: &str| FOCUS.parse::<f32>(t))]
         focus: f32,
         /// Blur radius in pixels of what is far behind the focus plane:
         /// radius = scale * |1 - focus / Z|.
-        #[arg(long)]
+        #[arg(long, value_parser = |t: &str| DEFOCUS_SCALE.parse::<f32>(t))]
         scale: f32,
         /// Largest radius (the rows read above and below).
-        #[arg(long, value_parser = clap::value_parser!(u32).range(0..=512))]
+        #[arg(long, value_parser = |t: &str| MAX_RADIUS.parse::<u32>(t))]
         max_radius: u32,
         /// disc, hexagon, or N-gon (5-gon, 8-gon...).
         #[arg(long, default_value = "disc", value_parser = crate::ops::defocus::Aperture::parse)]
@@ -91,14 +92,14 @@ pub enum Command {
         #[command(flatten)]
         one: OneInput,
         /// Scales the displacement: 0 for none, 1 as rendered.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| VBLUR_SCALE.parse::<f32>(t))]
         scale: f32,
         /// The x and y displacement channels (y down, in pixels).
         #[arg(long, default_value = "forward.u,forward.v", value_parser = parse_pair)]
         vectors: (String, String),
         /// Rows a streak may reach; without it, a first pass over the vectors
         /// measures it. A longer streak is an error, never cut.
-        #[arg(long)]
+        #[arg(long, value_parser = |t: &str| MAX_DISPLACEMENT.parse::<u32>(t))]
         max_displacement: Option<u32>,
     },
     /// The other eye of a stereo pair from one view and its depth.
@@ -110,7 +111,7 @@ pub enum Command {
         #[arg(long, value_enum)]
         eye: crate::ops::stereo::Eye,
         /// Shift in pixels at depth 1: a pixel at depth Z moves K / Z.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true, value_parser = |t: &str| DISPARITY.parse::<f32>(t))]
         disparity: f32,
         #[arg(long, default_value = "Z")]
         z_channel: String,
@@ -148,7 +149,7 @@ pub enum Command {
         #[arg(short, long)]
         output: String,
         /// G in P - G (I4 - I3).
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true, value_parser = |t: &str| SHADOW_GAIN.parse::<f32>(t))]
         shadow_gain: f32,
         /// Write I5 = (I1 over I2) - I3 instead, for grading.
         #[arg(long)]
@@ -166,16 +167,16 @@ pub enum Command {
         #[arg(long, default_value = "green", value_parser = parse_screen)]
         screen: [f32; 3],
         /// Scales the difference: above 1 more transparent.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| GAIN.parse::<f32>(t))]
         gain: f32,
         /// Weight of the first other channel against the second (0..1).
-        #[arg(long, default_value_t = 0.5)]
+        #[arg(long, default_value_t = 0.5, value_parser = |t: &str| BALANCE.parse::<f32>(t))]
         balance: f32,
         /// Alpha at or below this becomes 0.
-        #[arg(long, default_value_t = 0.0)]
+        #[arg(long, default_value_t = 0.0, value_parser = |t: &str| CLIP.parse::<f32>(t))]
         clip_black: f32,
         /// Alpha at or above this becomes 1.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| CLIP.parse::<f32>(t))]
         clip_white: f32,
         /// Limit the screen channel to the other two (spill suppression).
         #[arg(long)]
@@ -194,10 +195,10 @@ pub enum Command {
         #[arg(short, long)]
         output: String,
         /// Differences up to this are background (alpha 0).
-        #[arg(long, default_value_t = 0.05)]
+        #[arg(long, default_value_t = 0.05, value_parser = |t: &str| THRESHOLD.parse::<f32>(t))]
         threshold: f32,
         /// Alpha reaches 1 at threshold + softness.
-        #[arg(long, default_value_t = 0.1)]
+        #[arg(long, default_value_t = 0.1, value_parser = |t: &str| SOFTNESS.parse::<f32>(t))]
         softness: f32,
         #[arg(long)]
         invert: bool,
@@ -362,7 +363,7 @@ pub struct FarmJob {
 pub struct Morph {
     #[command(flatten)]
     pub one: OneInput,
-    #[arg(long, value_parser = clap::value_parser!(u32).range(0..=1024))]
+    #[arg(long, value_parser = |t: &str| MORPH_RADIUS.parse::<u32>(t))]
     pub radius: u32,
     /// 1 - alpha afterwards.
     #[arg(long)]
@@ -451,12 +452,9 @@ pub fn parse_screen(text: &str) -> Result<[f32; 3], String> {
     }
     let values: Vec<f32> = text
         .split(',')
-        .map(|v| {
-            v.trim()
-                .parse::<f32>()
-                .map_err(|_| "expected green, blue or R,G,B".to_string())
-        })
-        .collect::<Result<_, _>>()?;
+        .map(|v| SCREEN.parse::<f32>(v))
+        .collect::<Result<_, _>>()
+        .map_err(|m| format!("expected green, blue or R,G,B: {m}"))?;
     match values[..] {
         [r, g, b] if r.max(g).max(b) > r.min(g).min(b) => Ok([r, g, b]),
         [_, _, _] => Err("a screen colour needs one channel above the others".into()),
@@ -476,15 +474,6 @@ fn parse_rows(text: &str) -> Result<(i32, i32), String> {
 fn parse_pair(text: &str) -> Result<(String, String), String> {
     let (x, y) = text.split_once(',').ok_or("expected X,Y")?;
     Ok((x.trim().to_string(), y.trim().to_string()))
-}
-
-fn parse_mix(text: &str) -> Result<f32, String> {
-    let mix: f32 = text.parse().map_err(|_| "expected a number")?;
-    if (0.0..=1.0).contains(&mix) {
-        Ok(mix)
-    } else {
-        Err("must be from 0 to 1".into())
-    }
 }
 
 fn parse_origin(text: &str) -> Result<(i32, i32), String> {

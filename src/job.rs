@@ -16,6 +16,7 @@ use crate::ops::premult::Premult;
 use crate::ops::stereo::{Eye, Stereo};
 use crate::ops::vblur::VectorBlur;
 use crate::ops::zmerge::ZMerge;
+use crate::params::*;
 use clap::ValueEnum;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
@@ -111,6 +112,16 @@ impl Source<'_> {
             .matches('\n')
             .count()
             + 1
+    }
+
+    /// `value` within `bound`, or the error at `span`.
+    fn checked<T: Into<f64> + Copy + std::fmt::Display>(
+        &self,
+        span: Range<usize>,
+        bound: &Bound,
+        value: T,
+    ) -> Result<T> {
+        bound.check(value).or_else(|m| self.error(span, m))
     }
 
     fn error<T>(&self, span: std::ops::Range<usize>, message: impl std::fmt::Display) -> Result<T> {
@@ -390,6 +401,8 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
         view: spec.view.clone(),
     };
     let straight = spec.straight.unwrap_or(false);
+    // The command line's bounds, one rule for both (crate::params).
+    let number = |bound: &Bound, value| at.checked(node.span(), bound, value);
     let want = |counts: std::ops::RangeInclusive<usize>, what: &str| -> Result<()> {
         if counts.contains(&count) {
             Ok(())
@@ -425,11 +438,7 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     )
                 })?,
             };
-            let mix = spec.mix.unwrap_or(1.0);
-            if !(0.0..=1.0).contains(&mix) {
-                return at.error(node.span(), "mix must be from 0 to 1");
-            }
-            Recipe::One(merge(operator, mix))
+            Recipe::One(merge(operator, number(&MIX, spec.mix.unwrap_or(1.0))?))
         }
         "stack" => {
             want(2..=usize::MAX, "two or more inputs")?;
@@ -446,7 +455,11 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             let Some(radius) = spec.radius else {
                 return at.error(node.span(), "op 'blur' needs a radius");
             };
-            Recipe::Blur(filter, radius as usize, layers)
+            Recipe::Blur(
+                filter,
+                at.checked(node.span(), &BLUR_RADIUS, radius)? as usize,
+                layers,
+            )
         }
         "premult" | "unpremult" => {
             want(1..=1, "one input")?;
@@ -472,6 +485,8 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     "op 'defocus' needs focus, scale and max_radius",
                 );
             };
+            let (focus, scale) = (number(&FOCUS, focus)?, number(&DEFOCUS_SCALE, scale)?);
+            let max_radius = at.checked(node.span(), &MAX_RADIUS, max_radius)?;
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
             one(move || Defocus {
                 focus,
@@ -500,7 +515,8 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     }
                 },
             };
-            let scale = spec.scale.unwrap_or(1.0);
+            let scale = number(&VBLUR_SCALE, spec.scale.unwrap_or(1.0))?;
+            let reach = at.checked(node.span(), &MAX_DISPLACEMENT, reach)?;
             one(move || VectorBlur {
                 scale,
                 vectors: vectors.clone(),
@@ -519,6 +535,7 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                     format!("eye is left or right, not '{}'", eye.get_ref()),
                 )
             })?;
+            let disparity = number(&DISPARITY, disparity)?;
             let z_channel = spec.z_channel.clone().unwrap_or_else(|| "Z".into());
             one(move || Stereo {
                 eye,
@@ -533,13 +550,14 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
                 Some(text) => parse_screen(text.get_ref()).or_else(|m| at.error(text.span(), m))?,
             };
             let clip = (
-                spec.clip_black.unwrap_or(0.0),
-                spec.clip_white.unwrap_or(1.0),
+                number(&CLIP, spec.clip_black.unwrap_or(0.0))?,
+                number(&CLIP, spec.clip_white.unwrap_or(1.0))?,
             );
             if clip.1 <= clip.0 {
                 return at.error(node.span(), "clip_white must be above clip_black");
             }
-            let (gain, balance) = (spec.gain.unwrap_or(1.0), spec.balance.unwrap_or(0.5));
+            let gain = number(&GAIN, spec.gain.unwrap_or(1.0))?;
+            let balance = number(&BALANCE, spec.balance.unwrap_or(0.5))?;
             let (despill, invert) = (spec.despill.unwrap_or(false), spec.invert.unwrap_or(false));
             one(move || {
                 Matte(Pull::Key(Key {
@@ -554,8 +572,8 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
         }
         "diffmatte" => {
             want(2..=2, "two inputs (footage, clean plate)")?;
-            let (threshold, softness) =
-                (spec.threshold.unwrap_or(0.05), spec.softness.unwrap_or(0.1));
+            let threshold = number(&THRESHOLD, spec.threshold.unwrap_or(0.05))?;
+            let softness = number(&SOFTNESS, spec.softness.unwrap_or(0.1))?;
             let invert = spec.invert.unwrap_or(false);
             one(move || {
                 Matte(Pull::Difference(DiffMatte {
@@ -577,9 +595,10 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
             let Some(radius) = spec.radius else {
                 return at.error(node.span(), format!("op '{}' needs a radius", op.get_ref()));
             };
+            let radius = at.checked(node.span(), &MORPH_RADIUS, radius)? as usize;
             let (dilate, invert) = (op.get_ref() == "dilate", spec.invert.unwrap_or(false));
             one(move || Morphology {
-                radius: radius as usize,
+                radius,
                 dilate,
                 invert,
                 layers: layers.clone(),
@@ -595,7 +614,7 @@ fn operation(at: &Source, node: &Spanned<NodeSpec>, count: usize) -> Result<Reci
         "diffrender" => {
             want(4..=4, "four inputs (object, proxy, with_shadows, plate)")?;
             Recipe::Diffrender(
-                spec.shadow_gain.unwrap_or(1.0),
+                number(&SHADOW_GAIN, spec.shadow_gain.unwrap_or(1.0))?,
                 spec.shadow_only.unwrap_or(false),
             )
         }

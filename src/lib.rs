@@ -11,4 +11,5 @@ pub mod info;
 pub mod io;
 pub mod job;
 pub mod ops;
+pub mod params;
 pub mod report;

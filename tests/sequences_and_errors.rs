@@ -36,7 +36,11 @@ fn frames_default_to_those_on_disk_gaps_included_and_printf_patterns_work() {
     // The gap at 9 is a missing frame, listed before any work.
     let out = over(&[]);
     assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
-    assert!(stderr(&out).contains("missing frames 9"), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("missing frames 9"),
+        "{}",
+        stderr(&out)
+    );
     assert!(!d.join("out").exists());
     let out = over(&["--missing", "skip"]);
     assert!(out.status.success(), "{}", stderr(&out));
@@ -65,7 +69,11 @@ fn an_output_naming_an_input_by_any_spelling_is_refused() {
     std::os::unix::fs::symlink(d.join("bg.0001.exr"), d.join("link.exr")).unwrap();
     let before = std::fs::read(d.join("bg.0001.exr")).unwrap();
     let refused = |args: &[&str]| {
-        let out = exrcomp().args(args).current_dir(d.join("here")).output().unwrap();
+        let out = exrcomp()
+            .args(args)
+            .current_dir(d.join("here"))
+            .output()
+            .unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
         assert!(
             stderr(&out).contains("refusing to overwrite an input"),
@@ -80,10 +88,30 @@ fn an_output_naming_an_input_by_any_spelling_is_refused() {
     refused(&["over", fg1, bg1, "-o", bg1]);
     refused(&["over", fg1, s(&d.join("link.exr")), "-o", "../bg.0001.exr"]);
     refused(&["over", fg1, "../link.exr", "-o", "../self/link.exr"]);
-    refused(&["over", "../fg.####.exr", "../bg.####.exr", "-o", "../self/bg.####.exr"]);
-    refused(&["blur", "../bg.####.exr", "-o", "../here/../bg.####.exr", "--radius", "1"]);
+    refused(&[
+        "over",
+        "../fg.####.exr",
+        "../bg.####.exr",
+        "-o",
+        "../self/bg.####.exr",
+    ]);
+    refused(&[
+        "blur",
+        "../bg.####.exr",
+        "-o",
+        "../here/../bg.####.exr",
+        "--radius",
+        "1",
+    ]);
     // Another pattern that reaches an input's file at another frame.
-    refused(&["transcode", "../bg.####.exr", "-o", "../bg.000#.exr", "--frames", "1"]);
+    refused(&[
+        "transcode",
+        "../bg.####.exr",
+        "-o",
+        "../bg.000#.exr",
+        "--frames",
+        "1",
+    ]);
     refused(&["stitch", fg1, bg1, "-o", "../self/bg.0001.exr"]);
     std::fs::write(
         d.join("job.toml"),
@@ -342,4 +370,81 @@ fn json_summary_reports_frames_pixels_and_memory() {
     assert_eq!(summary["pixels"], 3 * 48 * 40);
     assert!(summary["peak_rss_bytes"].as_u64().unwrap() > 1 << 20);
     assert!(summary["pixels_per_second"].as_f64().unwrap() > 0.0);
+}
+
+/// One rule for every number, on the command line: finite and within bounds.
+#[test]
+fn numeric_options_are_finite_and_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (input, output) = (d.join("in.exr"), d.join("out.exr"));
+    generate(&input, "fg", (16, 16), &[]);
+    let (i, o) = (s(&input), s(&output));
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["vblur", i, "-o", o, "--scale", "1e30"],
+        vec!["vblur", i, "-o", o, "--scale", "NaN"],
+        vec!["vblur", i, "-o", o, "--max-displacement", "4000000000"],
+        vec!["stereo", i, "-o", o, "--eye", "left", "--disparity", "1e30"],
+        vec!["stereo", i, "-o", o, "--eye", "left", "--disparity", "nan"],
+        vec!["key", i, "-o", o, "--screen", "NaN,1,0"],
+        vec!["key", i, "-o", o, "--gain", "inf"],
+        vec![
+            "defocus",
+            i,
+            "-o",
+            o,
+            "--focus",
+            "1",
+            "--scale",
+            "1e30",
+            "--max-radius",
+            "4",
+        ],
+        vec![
+            "defocus",
+            i,
+            "-o",
+            o,
+            "--focus",
+            "NaN",
+            "--scale",
+            "1",
+            "--max-radius",
+            "4",
+        ],
+        vec!["merge", "--op", "over", i, i, "-o", o, "--mix", "NaN"],
+        vec![
+            "diffmatte",
+            i,
+            "--clean-plate",
+            i,
+            "-o",
+            o,
+            "--softness=-inf",
+        ],
+        vec!["--threads", "0", "transcode", i, "-o", o],
+        vec!["--threads", "100000", "transcode", i, "-o", o],
+    ];
+    for args in cases {
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("must be"),
+            "{args:?}: {}",
+            stderr(&out)
+        );
+        assert!(!output.exists());
+    }
+    let out = run(&[
+        "stereo",
+        i,
+        "-o",
+        o,
+        "--eye",
+        "left",
+        "--disparity",
+        "-20",
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
 }

@@ -5,7 +5,7 @@ use super::deep_input::DeepInput;
 use super::graph::{Graph, Node};
 use crate::error::{Error, Kind, Result};
 use crate::io::parts::choose_part;
-use crate::io::reader::ExrFile;
+use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
 use exr::meta::attribute::Text;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
@@ -248,7 +248,18 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
     };
-    let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
+    let block_bytes = (window.size.width() * lines).saturating_mul(header.channels.bytes_per_pixel);
+    // Never write a file the reader would refuse (and never allocate for it).
+    if block_bytes > MAX_BLOCK_BYTES {
+        return Err(Error::new(
+            Kind::Usage,
+            format!(
+                "frame {frame}: an output block of {} x {lines} pixels would take {block_bytes} bytes, \
+                 over the {MAX_BLOCK_BYTES}-byte limit: make the image narrower",
+                window.size.width()
+            ),
+        ));
+    }
     let blocks = STRIP_BYTES
         .div_ceil(block_bytes.max(1))
         .max(rayon::current_num_threads());

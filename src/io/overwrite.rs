@@ -76,7 +76,9 @@ mod tests {
         assert!(refuse_overwriting([linked], [(Some(7), input.clone())]).is_err());
         // New files are compared by their folder's real path.
         let new = dir.path().join("new.exr");
-        assert!(refuse_overwriting([new.clone()], [(None, dir.path().join("self/new.exr"))]).is_err());
+        assert!(
+            refuse_overwriting([new.clone()], [(None, dir.path().join("self/new.exr"))]).is_err()
+        );
         assert!(refused(dir.path().join("c.exr")).is_ok());
         assert!(refused(dir.path().join("missing/b.exr")).is_ok());
     }

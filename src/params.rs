@@ -1,0 +1,110 @@
+//! The bounds of every numeric parameter, and one rule for them wherever a
+//! value comes in, the command line or a job file: a finite number within
+//! its bounds. A bound keeps what a value drives (halo rows, streak lengths,
+//! shifts) from asking for unbounded memory or time.
+
+use std::fmt::Display;
+use std::str::FromStr;
+
+pub struct Bound {
+    /// The name as both the command line (`--max-radius`) and job files
+    /// (`max_radius`) spell it, with `_`.
+    pub name: &'static str,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl Bound {
+    /// `value` if it is finite and within the bounds.
+    pub fn check<T: Into<f64> + Copy + Display>(&self, value: T) -> Result<T, String> {
+        let v: f64 = value.into();
+        if v.is_finite() && (self.min..=self.max).contains(&v) {
+            Ok(value)
+        } else {
+            Err(self.refusal(value))
+        }
+    }
+
+    fn refusal(&self, shown: impl Display) -> String {
+        format!(
+            "{} must be a number from {} to {}, not {shown}",
+            self.name, self.min, self.max
+        )
+    }
+
+    /// Parses and checks a command-line value.
+    pub fn parse<T: FromStr + Into<f64> + Copy + Display>(&self, text: &str) -> Result<T, String> {
+        let value = text.trim().parse::<T>().map_err(|_| self.refusal(text))?;
+        self.check(value).map_err(|_| self.refusal(text))
+    }
+}
+
+const fn bound(name: &'static str, min: f64, max: f64) -> Bound {
+    Bound { name, min, max }
+}
+
+pub const THREADS_PER_CORE: usize = 8;
+pub const MIX: Bound = bound("mix", 0.0, 1.0);
+pub const BLUR_RADIUS: Bound = bound("radius", 0.0, 4096.0);
+pub const MORPH_RADIUS: Bound = bound("radius", 0.0, 1024.0);
+pub const FOCUS: Bound = bound("focus", 0.0, 1e9);
+pub const DEFOCUS_SCALE: Bound = bound("scale", 0.0, 1e6);
+pub const MAX_RADIUS: Bound = bound("max_radius", 0.0, 512.0);
+pub const VBLUR_SCALE: Bound = bound("scale", -1000.0, 1000.0);
+pub const MAX_DISPLACEMENT: Bound = bound("max_displacement", 0.0, 16384.0);
+pub const DISPARITY: Bound = bound("disparity", -1e6, 1e6);
+pub const SHADOW_GAIN: Bound = bound("shadow_gain", -100.0, 100.0);
+pub const SCREEN: Bound = bound("screen", 0.0, 1e6);
+pub const GAIN: Bound = bound("gain", 0.0, 1000.0);
+pub const BALANCE: Bound = bound("balance", 0.0, 1.0);
+pub const CLIP: Bound = bound("clip", 0.0, 1.0);
+pub const THRESHOLD: Bound = bound("threshold", 0.0, 1e6);
+pub const SOFTNESS: Bound = bound("softness", 0.0, 1e6);
+
+/// `--threads`: at least one, at most `THREADS_PER_CORE` per core the
+/// machine has (more only costs memory and start-up).
+pub fn parse_threads(text: &str) -> Result<usize, String> {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let most = cores * THREADS_PER_CORE;
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=most).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "threads must be a whole number from 1 to {most} ({THREADS_PER_CORE} per core), not '{text}'"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_rule_for_every_number() {
+        for text in ["NaN", "nan", "inf", "-inf", "1e30", "-0.5", "1.5", "x", ""] {
+            assert!(MIX.parse::<f32>(text).is_err(), "{text}");
+        }
+        assert_eq!(MIX.parse::<f32>("0.25"), Ok(0.25));
+        assert_eq!(MAX_RADIUS.parse::<u32>("512"), Ok(512));
+        assert!(MAX_RADIUS.parse::<u32>("513").is_err());
+        assert!(VBLUR_SCALE.check(f32::NAN).is_err());
+        assert!(VBLUR_SCALE.check(f32::INFINITY).is_err());
+        assert_eq!(VBLUR_SCALE.check(-2.0f32), Ok(-2.0));
+        let message = DISPARITY.parse::<f32>("1e30").unwrap_err();
+        assert!(
+            message.contains("disparity must be a number from"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn threads_are_bounded_by_the_machine() {
+        assert!(parse_threads("0").is_err());
+        assert!(parse_threads("100000").is_err());
+        assert!(parse_threads("-1").is_err());
+        assert_eq!(parse_threads("1"), Ok(1));
+        assert_eq!(
+            parse_threads(&THREADS_PER_CORE.to_string()),
+            Ok(THREADS_PER_CORE)
+        );
+    }
+}
