@@ -103,15 +103,19 @@ fn beside(job: &Path, file: &str) -> String {
 /// Where in the job file something is, for messages: "job.toml:12".
 struct Source<'a> {
     path: &'a Path,
-    text: &'a str,
+    /// Where each line after the first starts, for finding lines in
+    /// logarithmic time (a job can have a hundred thousand nodes).
+    line_starts: Vec<usize>,
 }
 
-impl Source<'_> {
+impl<'a> Source<'a> {
+    fn new(path: &'a Path, text: &str) -> Self {
+        let line_starts = text.match_indices('\n').map(|(i, _)| i + 1).collect();
+        Source { path, line_starts }
+    }
+
     fn line(&self, offset: usize) -> usize {
-        self.text[..offset.min(self.text.len())]
-            .matches('\n')
-            .count()
-            + 1
+        self.line_starts.partition_point(|&start| start <= offset) + 1
     }
 
     /// `value` within `bound`, or the error at `span`.
@@ -136,7 +140,7 @@ impl Source<'_> {
 pub fn load(path: &Path) -> Result<JobPlan> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
-    let at = Source { path, text: &text };
+    let at = Source::new(path, &text);
     let file: JobFile = toml::from_str(&text).map_err(|e| {
         let line = e.span().map(|s| at.line(s.start)).unwrap_or(0);
         Error::usage(format!("{}:{line}: {}", path.display(), e.message()))
@@ -343,33 +347,46 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
     })
 }
 
+/// Depth first from `root`, with an explicit stack (a chain of a hundred
+/// thousand nodes must not overflow the call stack): each node is pushed to
+/// `order` after its inputs; a node met again while open closes a cycle.
 fn visit(
     at: &Source,
     nodes: &[Spanned<NodeSpec>],
     inputs: &[Vec<usize>],
-    n: usize,
+    root: usize,
     state: &mut [u8],
     order: &mut Vec<usize>,
 ) -> Result<()> {
-    match state[n] {
-        2 => return Ok(()),
-        1 => {
-            return at.error(
-                nodes[n].span(),
-                format!(
-                    "node '{}' is part of a cycle",
-                    nodes[n].get_ref().name.get_ref()
-                ),
-            )
+    // (node, how many of its inputs have been visited)
+    let mut stack = vec![(root, 0)];
+    state[root] = 1;
+    while let Some((n, next)) = stack.last_mut() {
+        let n = *n;
+        let Some(&i) = inputs[n].get(*next) else {
+            state[n] = 2;
+            order.push(n);
+            stack.pop();
+            continue;
+        };
+        *next += 1;
+        match state[i] {
+            0 => {
+                state[i] = 1;
+                stack.push((i, 0));
+            }
+            1 => {
+                return at.error(
+                    nodes[i].span(),
+                    format!(
+                        "node '{}' is part of a cycle",
+                        nodes[i].get_ref().name.get_ref()
+                    ),
+                )
+            }
+            _ => {}
         }
-        _ => {}
     }
-    state[n] = 1;
-    for &i in &inputs[n] {
-        visit(at, nodes, inputs, i, state, order)?;
-    }
-    state[n] = 2;
-    order.push(n);
     Ok(())
 }
 

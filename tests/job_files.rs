@@ -5,6 +5,7 @@ mod common;
 use common::*;
 use exr::prelude::{Compression, LineOrder};
 use std::path::Path;
+use std::process::Command;
 
 fn examples() -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/examples")
@@ -241,4 +242,34 @@ fn neighbourhood_ops_chain_with_merges_in_one_pass() {
         let name = |n: &str| d.join(format!("{n}.{frame:04}.exr"));
         assert_identical(&read_image(&name("comp")), &read_image(&name("s5")));
     }
+}
+
+/// A chain of a hundred thousand nodes: no recursion over the graph (the
+/// call stack would overflow), and memory that does not grow with one strip
+/// per node (each node's rows are freed once its consumers have read them).
+#[test]
+fn a_hundred_thousand_node_chain_runs_in_bounded_memory() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate(&d.join("in.exr"), "fg", (64, 48), &[]);
+    let mut job = String::from("[[node]]\nname = \"n0\"\nread = \"in.exr\"\n");
+    let nodes = 100_000;
+    for i in 1..=nodes {
+        job += &format!(
+            "[[node]]\nname = \"n{i}\"\nop = \"premult\"\ninputs = [\"n{}\"]\n",
+            i - 1
+        );
+    }
+    job += &format!("[[node]]\nname = \"w\"\nwrite = \"out.exr\"\ninputs = [\"n{nodes}\"]\n");
+    std::fs::write(d.join("chain.toml"), job).unwrap();
+    // One 48-row strip of 64 px RGBA f32 per node would be 4.9 GB.
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 2097152; exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_exrcomp"))
+        .args(["run", s(&d.join("chain.toml")), "-q"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{:?}: {}", out.status, stderr(&out));
+    assert!(d.join("out.exr").exists());
 }

@@ -11,6 +11,8 @@ pub struct Composer<'g> {
     graph: &'g Graph,
     /// Per node: the rows it has produced and still keeps.
     windows: Vec<Rows>,
+    /// Per node: the nodes that read it, in graph order.
+    consumers: Vec<Vec<usize>>,
     /// Rows of the output node already handed out.
     emitted: i32,
     /// The end of the strips pushed so far.
@@ -42,9 +44,16 @@ impl<'g> Composer<'g> {
                 )
             })
             .collect();
+        let mut consumers = vec![Vec::new(); graph.nodes.len()];
+        for (n, node) in graph.nodes.iter().enumerate() {
+            if let Node::Op { inputs, .. } = node {
+                inputs.iter().for_each(|&i| consumers[i].push(n));
+            }
+        }
         Composer {
             graph,
             windows,
+            consumers,
             emitted: top,
             fed: top,
             emit_multiple,
@@ -100,11 +109,19 @@ impl<'g> Composer<'g> {
                         op.compute(frame, &args, &mut out)?;
                         self.windows[n].append(out);
                     }
+                    // Inputs read by no later node are trimmed now, not after
+                    // the last node: a long chain holds a few strips, not one
+                    // per node.
+                    for &i in inputs {
+                        if self.consumers[i].last() == Some(&n) {
+                            self.forget_used_rows(i);
+                        }
+                    }
                 }
             }
         }
         let result = self.take_output();
-        self.forget_used_rows();
+        self.forget_used_rows(self.graph.output());
         Ok(result)
     }
 
@@ -123,22 +140,22 @@ impl<'g> Composer<'g> {
         Some(rows)
     }
 
-    /// Drops rows no consumer will read again.
-    fn forget_used_rows(&mut self) {
-        let n_nodes = self.graph.nodes.len();
-        let mut keep_from: Vec<i32> = vec![i32::MAX; n_nodes];
-        keep_from[self.graph.output()] = self.emitted;
-        for (n, node) in self.graph.nodes.iter().enumerate() {
-            if let Node::Op { op, inputs } = node {
-                let next_needed = self.windows[n].end() - op.halo() as i32;
-                for &i in inputs {
-                    keep_from[i] = keep_from[i].min(next_needed);
-                }
-            }
+    /// Drops the rows of node `n` that no consumer will read again (its
+    /// consumers have all computed what they can from this strip).
+    fn forget_used_rows(&mut self, n: usize) {
+        let mut keep_from = if n == self.graph.output() {
+            self.emitted
+        } else {
+            i32::MAX
+        };
+        for &c in &self.consumers[n] {
+            let halo = match &self.graph.nodes[c] {
+                Node::Op { op, .. } => op.halo() as i32,
+                Node::Input(_) => 0,
+            };
+            keep_from = keep_from.min(self.windows[c].end() - halo);
         }
-        for (window, from) in self.windows.iter_mut().zip(keep_from) {
-            window.drop_rows_before(from);
-        }
+        self.windows[n].drop_rows_before(keep_from);
     }
 }
 

@@ -121,11 +121,20 @@ impl Samples {
         }
     }
 
+    /// Forgets the first `count` samples; all of them frees the memory too
+    /// (an emptied window takes over the next strip's planes as they are).
     fn drop_front(&mut self, count: usize) {
+        fn drop_front<T>(v: &mut Vec<T>, count: usize) {
+            if count >= v.len() {
+                *v = Vec::new();
+            } else {
+                v.drain(..count);
+            }
+        }
         match self {
-            Samples::F16(v) => drop(v.drain(..count)),
-            Samples::F32(v) => drop(v.drain(..count)),
-            Samples::U32(v) => drop(v.drain(..count)),
+            Samples::F16(v) => drop_front(v, count),
+            Samples::F32(v) => drop_front(v, count),
+            Samples::U32(v) => drop_front(v, count),
         }
     }
 }
