@@ -1,12 +1,19 @@
 //! Writes one EXR file from compressed chunks arriving in order, under a
 //! temporary name that is renamed into place only once the file is complete.
+//!
+//! The header is written here, not by the exr crate: its attributes in one
+//! fixed order (sorted by name, as OpenEXR writes them; the crate follows a
+//! hash map's order, so the same job wrote different bytes from run to run),
+//! and `keyCode` with all seven of its fields (the crate writes six, and
+//! OpenEXR then refuses the file).
 
 use crate::engine::encode::IndexedChunk;
 use crate::error::{Error, Result};
-use exr::block::writer::ChunksWriter;
+use exr::meta::attribute::{AttributeValue, KeyCode};
 use exr::meta::header::Header;
+use exr::meta::MetaData;
 use std::fs::{self, File};
-use std::io::BufWriter;
+use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
 /// Where a file is written before it is complete: hidden, in the same folder
@@ -61,36 +68,42 @@ pub fn write_file(
     let temporary = temporary_path(path);
     let result = (|| {
         let file = File::create(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
-        let mut out = BufWriter::with_capacity(1 << 20, file);
-        let mut upstream: Option<Error> = None;
-        let mut expected = 0;
-        let written = exr::block::write(&mut out, smallvec(header), false, |_, writer| loop {
-            match next() {
-                Ok(Some(chunks)) => {
-                    for c in chunks {
-                        if c.index != expected {
-                            upstream = Some(Error::internal(format!(
-                                "chunk {} arrived where chunk {expected} was due",
-                                c.index
-                            )));
-                            return Err(exr::error::Error::Aborted);
-                        }
-                        writer.write_chunk(c.index, c.chunk)?;
-                        expected += 1;
-                    }
+        let mut out = Counting {
+            inner: BufWriter::with_capacity(1 << 20, file),
+            position: 0,
+        };
+        let chunk_count = header.chunk_count;
+        let bytes = header_bytes(&header).map_err(|e| fail(&e))?;
+        out.write_all(&bytes).map_err(|e| fail(&e))?;
+        // The offset table, filled in once the chunks' places are known.
+        let table = out.position;
+        out.write_all(&vec![0; chunk_count * 8])
+            .map_err(|e| fail(&e))?;
+        let mut offsets: Vec<u64> = Vec::with_capacity(chunk_count);
+        while let Some(chunks) = next()? {
+            for c in chunks {
+                if c.index != offsets.len() || c.index >= chunk_count {
+                    return Err(Error::internal(format!(
+                        "chunk {} arrived where chunk {} of {chunk_count} was due",
+                        c.index,
+                        offsets.len()
+                    )));
                 }
-                Ok(None) => return Ok(()),
-                Err(e) => {
-                    upstream = Some(e);
-                    return Err(exr::error::Error::Aborted);
-                }
+                offsets.push(out.position);
+                c.chunk.write(&mut out, 1).map_err(|e| fail(&e))?;
             }
-        });
-        if let Some(e) = upstream {
-            return Err(e);
         }
-        written.map_err(|e| fail(&e))?;
-        let file = out.into_inner().map_err(|e| fail(&e.error()))?;
+        if offsets.len() != chunk_count {
+            return Err(Error::internal(format!(
+                "{} of {chunk_count} chunks were written",
+                offsets.len()
+            )));
+        }
+        let mut file = out.inner.into_inner().map_err(|e| fail(&e.error()))?;
+        let table_bytes: Vec<u8> = offsets.iter().flat_map(|o| o.to_le_bytes()).collect();
+        file.seek(SeekFrom::Start(table))
+            .and_then(|_| file.write_all(&table_bytes))
+            .map_err(|e| fail(&e))?;
         file.sync_all().map_err(|e| fail(&e))?;
         fs::rename(&temporary, path).map_err(|e| fail(&format!("cannot rename into place: {e}")))
     })();
@@ -100,8 +113,62 @@ pub fn write_file(
     result
 }
 
-fn smallvec(header: Header) -> exr::meta::Headers {
-    let mut headers = exr::meta::Headers::new();
-    headers.push(header);
-    headers
+/// A writer that knows how many bytes went through it: where each chunk
+/// starts, without flushing the buffer to ask the file.
+struct Counting<W> {
+    inner: W,
+    position: u64,
+}
+
+impl<W: Write> Write for Counting<W> {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        let n = self.inner.write(bytes)?;
+        self.position += n as u64;
+        Ok(n)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.inner.flush()
+    }
+}
+
+/// The magic number, version and flags, and `header`'s attributes sorted
+/// by name, of a single-part scanline or tiled file; checked as the exr
+/// crate checks what it writes.
+pub fn header_bytes(header: &Header) -> exr::error::Result<Vec<u8>> {
+    let mut requirements = MetaData::validate(std::slice::from_ref(header), false)?;
+    requirements.file_format_version = 2;
+    let mut attributes: Vec<_> = header.all_named_attributes().collect();
+    attributes.sort_by(|a, b| a.0.cmp(b.0));
+    let mut bytes = exr::meta::magic_number::BYTES.to_vec();
+    requirements.write(&mut bytes)?;
+    for (name, value) in &attributes {
+        match value {
+            AttributeValue::KeyCode(code) => write_key_code(name, code, &mut bytes),
+            value => exr::meta::attribute::write(name, value, &mut bytes)?,
+        }
+    }
+    bytes.push(0);
+    Ok(bytes)
+}
+
+/// `keyCode` as OpenEXR lays it out: seven little-endian ints.
+fn write_key_code(name: &[u8], code: &KeyCode, bytes: &mut Vec<u8>) {
+    let fields = [
+        code.film_manufacturer_code,
+        code.film_type,
+        code.film_roll_prefix,
+        code.count,
+        code.perforation_offset,
+        code.perforations_per_frame,
+        code.perforations_per_count,
+    ];
+    for text in [name, b"keycode"] {
+        bytes.extend_from_slice(text);
+        bytes.push(0);
+    }
+    bytes.extend_from_slice(&(fields.len() as i32 * 4).to_le_bytes());
+    fields
+        .iter()
+        .for_each(|f| bytes.extend_from_slice(&f.to_le_bytes()));
 }

@@ -1,0 +1,137 @@
+//! Header attributes survive exactly, and the same job writes the same bytes:
+//! an input carrying every kind of standard attribute (OpenEXR's exrstdattr)
+//! and custom typed ones (oiiotool's --attrib), checked against exrheader's
+//! own reading of the input.
+
+mod common;
+use common::*;
+use std::path::Path;
+use std::process::Command;
+
+/// exrheader's text of `path` without the lines exrcomp owns: the file
+/// name, its provenance and the chunk count it declares.
+fn header_text(exrheader: &Path, path: &Path) -> String {
+    let out = Command::new(exrheader).arg(path).output().unwrap();
+    assert!(
+        out.status.success(),
+        "exrheader cannot read {}",
+        path.display()
+    );
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| {
+            !l.starts_with("file ") && !l.starts_with("software ") && !l.starts_with("chunkCount ")
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn every_attribute_survives_and_runs_write_identical_bytes() {
+    let (Some(exrheader), Some(exrstdattr), Some(oiiotool)) =
+        (peer("exrheader"), peer("exrstdattr"), peer("oiiotool"))
+    else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate(&d.join("plain.exr"), "bg", (40, 36), &[]);
+    // Custom attributes of many types, as oiiotool and Nuke write them.
+    let out = Command::new(oiiotool)
+        .arg(d.join("plain.exr"))
+        .args(["--attrib", "studio:float", "1.5"])
+        .args(["--attrib", "studio:int", "7"])
+        .args(["--attrib", "studio:string", "shot 010"])
+        .args([
+            "--attrib:type=matrix",
+            "studio:m44",
+            "1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1",
+        ])
+        .args(["--attrib:type=vector", "studio:v3", "1,2,3"])
+        .args(["--attrib:type=float[2]", "studio:v2", "1,2"])
+        .args(["--attrib:type=int[2]", "studio:v2i", "1,2"])
+        .args(["--attrib:type=rational", "studio:rational", "1/3"])
+        .args(["--attrib:type=box2i", "studio:box", "0,0,5,5"])
+        .args(["--attrib:type=double", "studio:double", "2.5"])
+        .arg("-o")
+        .arg(d.join("custom.exr"))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    // Every standard attribute exrstdattr sets, keyCode among them.
+    let input = d.join("in.exr");
+    let out = Command::new(exrstdattr)
+        .args(["-keyCode", "1", "2", "3", "4", "5", "4", "64"])
+        .args(["-timeCode", "1", "2", "-framesPerSecond", "24", "1"])
+        .args([
+            "-chromaticities",
+            "0.64",
+            "0.33",
+            "0.3",
+            "0.6",
+            "0.15",
+            "0.06",
+            "0.3127",
+            "0.329",
+        ])
+        .args([
+            "-whiteLuminance",
+            "100",
+            "-xDensity",
+            "72",
+            "-utcOffset",
+            "3600",
+        ])
+        .args([
+            "-longitude",
+            "1",
+            "-latitude",
+            "2",
+            "-altitude",
+            "3",
+            "-focus",
+            "4",
+        ])
+        .args(["-expTime", "0.01", "-aperture", "2.8", "-isoSpeed", "100"])
+        .args([
+            "-envmap",
+            "LATLONG",
+            "-wrapmodes",
+            "clamp",
+            "-adoptedNeutral",
+            "0.3",
+            "0.3",
+        ])
+        .args([
+            "-owner",
+            "me",
+            "-comments",
+            "hello",
+            "-capDate",
+            "2026:01:01 10:00:00",
+        ])
+        .args(["-renderingTransform", "RT", "-lookModTransform", "LMT"])
+        .arg(d.join("custom.exr"))
+        .arg(&input)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    let expected = header_text(&exrheader, &input);
+    assert!(expected.contains("keyCode") && expected.contains("studio:m44"));
+    let outputs: Vec<Vec<u8>> = (0..3)
+        .map(|i| {
+            let output = d.join(format!("out{i}.exr"));
+            let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+            assert!(out.status.success(), "{}", stderr(&out));
+            assert_eq!(header_text(&exrheader, &output), expected);
+            assert_peers_read(&output);
+            std::fs::read(&output).unwrap()
+        })
+        .collect();
+    assert!(outputs.iter().all(|o| *o == outputs[0]), "runs differ");
+    // A composite keeps B's attributes just as well.
+    let output = d.join("over.exr");
+    let out = run(&["over", s(&input), s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(header_text(&exrheader, &output), expected);
+}
