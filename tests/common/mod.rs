@@ -69,13 +69,45 @@ pub fn write_sequence(dir: &Path, name: &str, frames: impl IntoIterator<Item = i
     }
 }
 
-pub fn shared_images() -> PathBuf {
+/// The few small images of OpenEXR's public test set shipped with the
+/// repository, in the shared set's layout (tests/images/README.md).
+pub fn shipped_images() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images")
+}
+
+/// Where the whole shared set is looked for: `$EXRCOMP_SHARED_IMAGES`, else
+/// `../shared/exr-images` beside the repository.
+fn shared_root() -> PathBuf {
     std::env::var_os("EXRCOMP_SHARED_IMAGES")
         .map(PathBuf::from)
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/exr-images"))
 }
 
-/// Something a check needs is missing (a peer tool): a
+/// The whole shared set of OpenEXR's public test images, or `None` (a
+/// skipped check, see `missing`) when it is absent.
+pub fn shared_images() -> Option<PathBuf> {
+    let root = shared_root();
+    if root.is_dir() {
+        return Some(root);
+    }
+    missing(&format!(
+        "the shared image set {} is absent (set EXRCOMP_SHARED_IMAGES)",
+        root.display()
+    ));
+    None
+}
+
+/// One image by its path in the shared set (`DisplayWindow/t08.exr`): the
+/// shipped copy, else the shared set's, else `None` (a skipped check).
+pub fn public_image(name: &str) -> Option<PathBuf> {
+    let shipped = shipped_images().join(name);
+    if shipped.is_file() {
+        return Some(shipped);
+    }
+    shared_images().map(|root| root.join(name))
+}
+
+/// Something a check needs is missing (a peer tool, the shared images): a
 /// failure under EXRCOMP_REQUIRE_PEERS=1 (CI), else a skipped check.
 pub fn missing(what: &str) {
     if std::env::var("EXRCOMP_REQUIRE_PEERS").as_deref() == Ok("1") {
