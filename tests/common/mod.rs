@@ -86,15 +86,7 @@ fn shared_root() -> PathBuf {
 /// The whole shared set of OpenEXR's public test images, or `None` (a
 /// skipped check, see `missing`) when it is absent.
 pub fn shared_images() -> Option<PathBuf> {
-    let root = shared_root();
-    if root.is_dir() {
-        return Some(root);
-    }
-    missing(&format!(
-        "the shared image set {} is absent (set EXRCOMP_SHARED_IMAGES)",
-        root.display()
-    ));
-    None
+    shared_set("")
 }
 
 /// One image by its path in the shared set (`DisplayWindow/t08.exr`): the
@@ -104,7 +96,20 @@ pub fn public_image(name: &str) -> Option<PathBuf> {
     if shipped.is_file() {
         return Some(shipped);
     }
-    shared_images().map(|root| root.join(name))
+    shared_set(&format!("{name} is not in tests/images and ")).map(|root| root.join(name))
+}
+
+/// The shared set, or `None` with `why` leading the reason it is missing.
+fn shared_set(why: &str) -> Option<PathBuf> {
+    let root = shared_root();
+    if root.is_dir() {
+        return Some(root);
+    }
+    missing(&format!(
+        "{why}the shared image set {} is absent (set EXRCOMP_SHARED_IMAGES)",
+        root.display()
+    ));
+    None
 }
 
 /// Something a check needs is missing (a peer tool, the shared images): a
