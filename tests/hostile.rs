@@ -37,6 +37,8 @@ fn check(path: &Path, truncated: bool) {
     }
 }
 
+/// The sources that are here: the last two are shipped, the others only in
+/// the shared set.
 fn sources() -> Vec<(String, Vec<u8>)> {
     [
         "ScanLines/Desk.exr",
@@ -45,11 +47,11 @@ fn sources() -> Vec<(String, Vec<u8>)> {
         "DisplayWindow/t01.exr",
     ]
     .iter()
-    .map(|name| {
-        (
+    .filter_map(|name| {
+        Some((
             name.replace('/', "_"),
-            std::fs::read(shared_images().join(name)).unwrap(),
-        )
+            std::fs::read(public_image(name)?).unwrap(),
+        ))
     })
     .collect()
 }
@@ -146,8 +148,11 @@ fn fuzzer_findings_stay_fixed() {
 
 #[test]
 fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
+    let Some(path) = public_image("DisplayWindow/t01.exr") else {
+        return;
+    };
     let dir = tempfile::tempdir().unwrap();
-    let bytes = std::fs::read(shared_images().join("ScanLines/Desk.exr")).unwrap();
+    let bytes = std::fs::read(path).unwrap();
     let (_, first) = offset_table(&bytes);
     let mut damaged = bytes.clone();
     // Scanline chunk: y (i32), then the data size (i32).

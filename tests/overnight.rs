@@ -281,7 +281,7 @@ fn a_full_disk_is_a_clear_output_error_with_nothing_left_behind() {
             std::env::var_os("CI").is_none(),
             "CI must be able to mount a small tmpfs for the full-disk test"
         );
-        eprintln!("SKIPPED: cannot mount a small tmpfs here (needs root)");
+        skip("cannot mount a small tmpfs here (needs root)");
         return;
     }
     let img = random_rgba(8, 0, 0, 300, 300, Kind::Float, true);

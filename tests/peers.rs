@@ -100,14 +100,15 @@ fn every_output_compression_decodes_in_openexr() {
 fn transcoding_real_photographs_is_lossless_and_readable() {
     let Some(idiff) = peer("idiff") else { return };
     let dir = tempfile::tempdir().unwrap();
-    let images = shared_images();
     for name in [
         "ScanLines/Desk.exr",
         "ScanLines/Cannon.exr",
         "Beachball/singlepart.0001.exr",
         "TestImages/AllHalfValues.exr",
     ] {
-        let source = images.join(name);
+        let Some(source) = public_image(name) else {
+            continue;
+        };
         for c in ["zip", "zips", "piz"] {
             let out = dir.path().join(format!("{c}.exr"));
             let result = run(&[

@@ -6,9 +6,11 @@
 use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
 use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, WritableImage};
 use half::f16;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::{Mutex, Once};
 
 pub fn exrcomp() -> Command {
     Command::new(env!("CARGO_BIN_EXE_exrcomp"))
@@ -67,10 +69,83 @@ pub fn write_sequence(dir: &Path, name: &str, frames: impl IntoIterator<Item = i
     }
 }
 
-pub fn shared_images() -> PathBuf {
+/// The few small images of OpenEXR's public test set shipped with the
+/// repository, in the shared set's layout (tests/images/README.md).
+pub fn shipped_images() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images")
+}
+
+/// Where the whole shared set is looked for: `$EXRCOMP_SHARED_IMAGES`, else
+/// `../shared/exr-images` beside the repository.
+fn shared_root() -> PathBuf {
     std::env::var_os("EXRCOMP_SHARED_IMAGES")
         .map(PathBuf::from)
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/exr-images"))
+}
+
+/// The whole shared set of OpenEXR's public test images, or `None` (a
+/// skipped check, see `missing`) when it is absent.
+pub fn shared_images() -> Option<PathBuf> {
+    shared_set("")
+}
+
+/// One image by its path in the shared set (`DisplayWindow/t08.exr`): the
+/// shipped copy, else the shared set's, else `None` (a skipped check).
+pub fn public_image(name: &str) -> Option<PathBuf> {
+    let shipped = shipped_images().join(name);
+    if shipped.is_file() {
+        return Some(shipped);
+    }
+    shared_set(&format!("{name} is not in tests/images and ")).map(|root| root.join(name))
+}
+
+/// The shared set, or `None` with `why` leading the reason it is missing.
+fn shared_set(why: &str) -> Option<PathBuf> {
+    let root = shared_root();
+    if root.is_dir() {
+        return Some(root);
+    }
+    missing(&format!(
+        "{why}the shared image set {} is absent (set EXRCOMP_SHARED_IMAGES)",
+        root.display()
+    ));
+    None
+}
+
+/// Something a check needs is missing (a peer tool, the shared images): a
+/// failure under EXRCOMP_REQUIRE_PEERS=1 (CI), else a skipped check.
+pub fn missing(what: &str) {
+    if std::env::var("EXRCOMP_REQUIRE_PEERS").as_deref() == Ok("1") {
+        panic!("{what}, but EXRCOMP_REQUIRE_PEERS=1 requires it");
+    }
+    skip(what);
+}
+
+/// The checks skipped in this test binary, as "test: reason".
+static SKIPPED: Mutex<BTreeSet<String>> = Mutex::new(BTreeSet::new());
+
+/// Records a skipped check of the running test. The test binary lists its
+/// skipped checks, counted, after its `test result:` line: printed at exit,
+/// on the process's stderr itself, which the test harness does not capture
+/// (it captures only `print!`/`eprint!` of a test's thread).
+pub fn skip(reason: &str) {
+    static AT_EXIT: Once = Once::new();
+    // SAFETY: `report_skipped` is an `extern "C" fn()` that never unwinds.
+    AT_EXIT.call_once(|| assert_eq!(unsafe { libc::atexit(report_skipped) }, 0));
+    let test = std::thread::current().name().unwrap_or("?").to_string();
+    SKIPPED
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .insert(format!("{test}: {reason}"));
+}
+
+extern "C" fn report_skipped() {
+    let skipped = SKIPPED.lock().unwrap_or_else(|e| e.into_inner());
+    let mut text = format!("SKIPPED: {} check(s) in this test binary:\n", skipped.len());
+    for line in skipped.iter() {
+        text += &format!("    {line}\n");
+    }
+    let _ = std::io::stderr().write_all(text.as_bytes());
 }
 
 /// A channel's samples, in its own type.
@@ -532,8 +607,8 @@ pub fn assert_identical(a: &Img, b: &Img) {
     }
 }
 
-/// A peer tool, or `None` (skip) when it is missing, unless
-/// EXRCOMP_REQUIRE_PEERS=1, which makes a missing peer a failure.
+/// A peer tool, or `None` (a skipped check, see `missing`) when it is not
+/// installed.
 pub fn peer(name: &str) -> Option<PathBuf> {
     let found = std::env::var_os("PATH").and_then(|paths| {
         std::env::split_paths(&paths)
@@ -541,10 +616,7 @@ pub fn peer(name: &str) -> Option<PathBuf> {
             .find(|p| p.is_file())
     });
     if found.is_none() {
-        if std::env::var("EXRCOMP_REQUIRE_PEERS").as_deref() == Ok("1") {
-            panic!("peer tool {name} is required (EXRCOMP_REQUIRE_PEERS=1) but not installed");
-        }
-        eprintln!("SKIPPED: peer tool {name} is not installed");
+        missing(&format!("peer tool {name} is not installed"));
     }
     found
 }
