@@ -167,7 +167,7 @@ fn decode_frame(
 /// and every chunk decodes.
 fn output_complete(path: &std::path::Path) -> bool {
     ExrFile::open(path, None)
-        .and_then(|file| file.check_part(0))
+        .and_then(|file| (0..file.meta.headers.len()).try_for_each(|p| file.check_part(p)))
         .is_ok()
 }
 
@@ -296,7 +296,7 @@ fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Re
             Some(Msg::Begin(_)) => Err(Error::internal("frame begun inside a frame")),
             None => Err(Error::stopped()),
         };
-        match write_file(&plan.output, plan.label, plan.header.clone(), next) {
+        match write_file(&plan.output, plan.label, plan.output_parts(), next) {
             Ok(()) => events.written(&plan),
             // The temporary file is gone; an abandoned frame is reported upstream.
             Err(e) if e.kind == Kind::Stopped && abandoned => continue,

@@ -7,6 +7,7 @@ use crate::error::{Error, Kind, Result};
 use crate::io::parts::choose_part;
 use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
+use crate::io::writer::Parts;
 use exr::meta::attribute::Text;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
 use exr::meta::header::{Header, LayerAttributes};
@@ -122,9 +123,29 @@ pub struct FramePlan {
     /// The rows computed: the whole output window, or for a band the band
     /// and the halo rows around it, on the output's block grid.
     pub computed: IntegerBounds,
+    /// The input whose other parts the output keeps, copied as they are:
+    /// the header's input when it has several parts.
+    pub carried: Option<usize>,
 }
 
 impl FramePlan {
+    /// The parts to write: the header's input's parts with the written part
+    /// in its place, or the written part alone.
+    pub fn output_parts(&self) -> Parts<'_> {
+        match self.carried {
+            Some(i) => {
+                let mut headers = self.inputs[i].meta.headers.to_vec();
+                headers[self.parts[i]] = self.header.clone();
+                Parts {
+                    headers,
+                    streamed: self.parts[i],
+                    carried: Some(&self.inputs[i]),
+                }
+            }
+            None => Parts::single(self.header.clone()),
+        }
+    }
+
     /// The window written (the band's, when there is one).
     pub fn window(&self) -> IntegerBounds {
         self.header.data_window()
@@ -243,6 +264,22 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         .height()
         .div_ceil(header.compression.scan_lines_per_block());
 
+    let carried = match job.header_base {
+        HeaderBase::Input(i)
+            if inputs[i].meta.headers.len() > 1
+                && matches!(sources.inputs[i], Source::Frame(_)) =>
+        {
+            Some(i)
+        }
+        _ => None,
+    };
+    if let (Some(i), Some(_)) = (carried, job.rows) {
+        return Err(inputs[i].error(format!(
+            "has {} parts: --rows renders bands of single-part outputs only, and the other parts \
+             would be lost",
+            inputs[i].meta.headers.len()
+        )));
+    }
     let lines = header.compression.scan_lines_per_block();
     let computed = match job.rows {
         Some(rows) => band(&mut header, graph, rows)?,
@@ -275,6 +312,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         windows,
         strip_rows: blocks * lines,
         computed,
+        carried,
     })
 }
 

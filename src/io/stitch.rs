@@ -2,7 +2,7 @@
 //! compressed chunks under a new offset table, decoding nothing.
 
 use super::reader::ExrFile;
-use super::writer::write_file;
+use super::writer::{write_file, Parts};
 use crate::engine::encode::IndexedChunk;
 use crate::error::Result;
 use exr::meta::attribute::IntegerBounds;
@@ -53,7 +53,7 @@ pub fn stitch(bands: &[PathBuf], output: &Path) -> Result<()> {
     header.chunk_count = window.size.height().div_ceil(lines);
     let mut next_file = files.iter();
     let mut index = 0;
-    write_file(output, None, header, || {
+    write_file(output, None, Parts::single(header), || {
         let Some(file) = next_file.next() else {
             return Ok(None);
         };

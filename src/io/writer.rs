@@ -7,6 +7,7 @@
 //! and `keyCode` with all seven of its fields (the crate writes six, and
 //! OpenEXR then refuses the file).
 
+use super::reader::ExrFile;
 use crate::engine::encode::IndexedChunk;
 use crate::error::{Error, Result};
 use exr::meta::attribute::{AttributeValue, KeyCode};
@@ -53,12 +54,33 @@ pub fn remove_stale_temporaries(dir: &Path) {
     }
 }
 
-/// Writes `header` and then the chunks `next` yields (`Ok(None)` ends the
-/// file). An error from `next` abandons the file and is returned as is.
+/// The parts of a file to write: `headers[streamed]` is the part whose
+/// chunks arrive through `next`; every other part is copied chunk for chunk,
+/// decoding nothing, from the same part of `carried` (the input whose other
+/// parts the output keeps).
+pub struct Parts<'a> {
+    pub headers: Vec<Header>,
+    pub streamed: usize,
+    pub carried: Option<&'a ExrFile>,
+}
+
+impl Parts<'_> {
+    pub fn single(header: Header) -> Self {
+        Parts {
+            headers: vec![header],
+            streamed: 0,
+            carried: None,
+        }
+    }
+}
+
+/// Writes the headers of `parts`, then the chunks `next` yields (`Ok(None)`
+/// ends them), then the carried parts' chunks. An error from `next` abandons
+/// the file and is returned as is.
 pub fn write_file(
     path: &Path,
     frame: Option<i64>,
-    header: Header,
+    parts: Parts,
     mut next: impl FnMut() -> Result<Option<Vec<IndexedChunk>>>,
 ) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
@@ -72,36 +94,63 @@ pub fn write_file(
             inner: BufWriter::with_capacity(1 << 20, file),
             position: 0,
         };
-        let chunk_count = header.chunk_count;
-        let bytes = header_bytes(&header).map_err(|e| fail(&e))?;
+        let headers = &parts.headers;
+        let count = headers.len();
+        let bytes = header_bytes(headers).map_err(|e| fail(&e))?;
         out.write_all(&bytes).map_err(|e| fail(&e))?;
-        // The offset table, filled in once the chunks' places are known.
-        let table = out.position;
-        out.write_all(&vec![0; chunk_count * 8])
-            .map_err(|e| fail(&e))?;
-        let mut offsets: Vec<u64> = Vec::with_capacity(chunk_count);
+        // The offset tables, filled in once the chunks' places are known.
+        let tables = out.position;
+        let total: usize = headers.iter().map(|h| h.chunk_count).sum();
+        out.write_all(&vec![0; total * 8]).map_err(|e| fail(&e))?;
+        let mut offsets: Vec<Vec<u64>> = headers
+            .iter()
+            .map(|h| Vec::with_capacity(h.chunk_count))
+            .collect();
+        let streamed = parts.streamed;
+        let chunk_count = headers[streamed].chunk_count;
         while let Some(chunks) = next()? {
-            for c in chunks {
-                if c.index != offsets.len() || c.index >= chunk_count {
+            for mut c in chunks {
+                let done = &mut offsets[streamed];
+                if c.index != done.len() || c.index >= chunk_count {
                     return Err(Error::internal(format!(
                         "chunk {} arrived where chunk {} of {chunk_count} was due",
                         c.index,
-                        offsets.len()
+                        done.len()
                     )));
                 }
-                offsets.push(out.position);
-                c.chunk.write(&mut out, 1).map_err(|e| fail(&e))?;
+                done.push(out.position);
+                c.chunk.layer_index = streamed;
+                c.chunk.write(&mut out, count).map_err(|e| fail(&e))?;
             }
         }
-        if offsets.len() != chunk_count {
+        if offsets[streamed].len() != chunk_count {
             return Err(Error::internal(format!(
                 "{} of {chunk_count} chunks were written",
-                offsets.len()
+                offsets[streamed].len()
             )));
         }
+        if let Some(source) = parts.carried {
+            for (part, done) in offsets.iter_mut().enumerate() {
+                if part == streamed {
+                    continue;
+                }
+                for index in 0..headers[part].chunk_count {
+                    let chunk = source.read_chunk(part, index)?;
+                    done.push(out.position);
+                    chunk.write(&mut out, count).map_err(|e| fail(&e))?;
+                }
+            }
+        }
         let mut file = out.inner.into_inner().map_err(|e| fail(&e.error()))?;
-        let table_bytes: Vec<u8> = offsets.iter().flat_map(|o| o.to_le_bytes()).collect();
-        file.seek(SeekFrom::Start(table))
+        let table_bytes: Vec<u8> = offsets
+            .iter()
+            .flatten()
+            .flat_map(|o| o.to_le_bytes())
+            .collect();
+        if table_bytes.len() != total * 8 {
+            return Err(Error::internal("a carried part was not copied whole"));
+        }
+        file.seek(SeekFrom::Start(tables))
             .and_then(|_| file.write_all(&table_bytes))
             .map_err(|e| fail(&e))?;
         file.sync_all().map_err(|e| fail(&e))?;
@@ -132,23 +181,28 @@ impl<W: Write> Write for Counting<W> {
     }
 }
 
-/// The magic number, version and flags, and `header`'s attributes sorted
-/// by name, of a single-part scanline or tiled file; checked as the exr
-/// crate checks what it writes.
-pub fn header_bytes(header: &Header) -> exr::error::Result<Vec<u8>> {
-    let mut requirements = MetaData::validate(std::slice::from_ref(header), false)?;
+/// The magic number, version and flags, and each header's attributes
+/// sorted by name; checked as the exr crate checks what it writes.
+pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
+    let mut requirements = MetaData::validate(headers, false)?;
     requirements.file_format_version = 2;
-    let mut attributes: Vec<_> = header.all_named_attributes().collect();
-    attributes.sort_by(|a, b| a.0.cmp(b.0));
     let mut bytes = exr::meta::magic_number::BYTES.to_vec();
     requirements.write(&mut bytes)?;
-    for (name, value) in &attributes {
-        match value {
-            AttributeValue::KeyCode(code) => write_key_code(name, code, &mut bytes),
-            value => exr::meta::attribute::write(name, value, &mut bytes)?,
+    for header in headers {
+        let mut attributes: Vec<_> = header.all_named_attributes().collect();
+        attributes.sort_by(|a, b| a.0.cmp(b.0));
+        for (name, value) in &attributes {
+            match value {
+                AttributeValue::KeyCode(code) => write_key_code(name, code, &mut bytes),
+                value => exr::meta::attribute::write(name, value, &mut bytes)?,
+            }
         }
+        bytes.push(0);
     }
-    bytes.push(0);
+    // A multi-part file's header list ends with an empty header.
+    if requirements.has_multiple_layers {
+        bytes.push(0);
+    }
     Ok(bytes)
 }
 
