@@ -1,10 +1,12 @@
-//! Hostile input: real files truncated at many offsets and with single bytes
-//! of their headers and offset tables changed. Every case ends within a
-//! bounded time, under a memory limit, with success or a one-line error
-//! naming the file: never a panic, an abort or a hang.
+//! Hostile input: real files truncated at many offsets (before or while they
+//! are read) and with single bytes of their headers and offset tables
+//! changed. Every case ends within a bounded time, under a memory limit, with
+//! success or a one-line error naming the file: never a panic, an abort, a
+//! signal or a hang.
 
 mod common;
 use common::*;
+use exrcomp::io::reader::ExrFile;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -161,4 +163,28 @@ fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
         "{}",
         stderr(&out)
     );
+}
+
+#[test]
+fn an_input_cut_short_while_it_is_read_is_an_input_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("plate.exr");
+    generate(&path, "bg", (512, 256), &["--compression", "zip"]);
+    let file = ExrFile::open(&path, Some(7)).unwrap();
+    let count = file.header(0).chunk_count;
+    // Another process rewrites the file after we opened it.
+    let len = std::fs::metadata(&path).unwrap().len();
+    let cut = std::fs::OpenOptions::new().write(true).open(&path).unwrap();
+    cut.set_len(len / 4).unwrap();
+    let named = |e: exrcomp::error::Error| {
+        assert_eq!(e.kind, exrcomp::error::Kind::Input, "{e}");
+        assert!(e.message.contains("plate.exr (frame 7)"), "{e}");
+    };
+    for k in count / 2..count {
+        named(file.decode_chunk(0, k).unwrap_err());
+        named(file.checked_zip_chunk(0, k).unwrap_err());
+        named(file.unpack_zip_chunk(0, k, |_| ()).unwrap_err());
+        named(file.read_chunk(0, k).unwrap_err());
+    }
+    named(file.check_part(0).unwrap_err());
 }
