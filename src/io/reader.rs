@@ -28,6 +28,50 @@ use std::path::{Path, PathBuf};
 /// float RGBA block of 32 lines is 32 MiB, so real files stay far below it.
 pub const MAX_BLOCK_BYTES: usize = 512 << 20;
 
+/// The most bytes one compressed byte of `compression` can decode to: a
+/// chunk claiming more is damaged, and is refused before anything sized from
+/// the claim is allocated.
+fn max_inflation(compression: Compression) -> usize {
+    match compression {
+        Compression::Uncompressed => 1,
+        // A repeat run: 2 bytes give at most 128.
+        Compression::RLE => 64,
+        // Deflate's limit: a 258-byte match in 2 bits (1032:1).
+        Compression::ZIP1 | Compression::ZIP16 => 1032,
+        // Huffman: a 1-bit run code and its 8-bit count repeat the last
+        // 16-bit value up to 255 times (510 bytes in 9 bits).
+        Compression::PIZ => 454,
+        // Deflate of samples whose floats are cut to 24 bits.
+        Compression::PXR24 => 1032 * 4 / 3,
+        // A flat 4x4 half block (32 bytes) in 3 bytes.
+        Compression::B44 | Compression::B44A => 11,
+        // Unclear (DWAA, DWAB): the loosest case found, a deflated 2-byte DC
+        // coefficient per 8x8 block of float samples (256 bytes); the file's
+        // size bounds the rest (`check_header_sizes`).
+        _ => 1032 * 128,
+    }
+}
+
+/// Checks that `packed` bytes of `compression` can hold `raw` bytes (stored
+/// raw, or within the codec's ratio).
+pub fn check_inflation(
+    compression: Compression,
+    packed: usize,
+    raw: usize,
+) -> std::result::Result<(), String> {
+    let fits = packed == raw
+        || (compression != Compression::Uncompressed
+            && raw as u128 <= packed as u128 * max_inflation(compression) as u128);
+    if fits {
+        Ok(())
+    } else {
+        Err(format!(
+            "{packed} bytes cannot hold the block's {raw} bytes ({compression}: at most {} per byte)",
+            max_inflation(compression)
+        ))
+    }
+}
+
 pub struct ExrFile {
     pub path: PathBuf,
     pub frame: Option<i64>,
@@ -73,10 +117,6 @@ impl ExrFile {
         let table_start = reader.get_ref().at - reader.buffer().len() as u64;
         validate(&meta).map_err(|e| err(format!("invalid EXR header: {e}")))?;
 
-        for (index, header) in meta.headers.iter().enumerate() {
-            check_header_sizes(header).map_err(|m| err(format!("part {index}: {m}")))?;
-        }
-
         let total_chunks: usize = meta.headers.iter().map(|h| h.chunk_count).sum();
         let table_end = (total_chunks as u64)
             .checked_mul(8)
@@ -87,6 +127,10 @@ impl ExrFile {
                     "truncated: the header announces {total_chunks} chunks but the file has {len} bytes"
                 ))
             })?;
+        for (index, header) in meta.headers.iter().enumerate() {
+            check_header_sizes(header, len - table_end)
+                .map_err(|m| err(format!("part {index}: {m}")))?;
+        }
 
         let table = read_at(&file, table_start, total_chunks * 8)
             .map_err(|m| err(format!("the offset table: {m}")))?;
@@ -196,6 +240,8 @@ impl ExrFile {
                 )));
             }
         }
+        self.check_block_size(part, &chunk.compressed_block)
+            .map_err(|m| damaged(&m))?;
         Ok(chunk)
     }
 
@@ -252,6 +298,32 @@ impl ExrFile {
         }
         let data = read_at(&self.file, range.start + fixed as u64, declared as usize)?;
         Ok((fields, data))
+    }
+
+    /// Checks the bytes a flat block decompresses to against what its
+    /// compressed bytes can hold (`check_inflation`), before a decoder
+    /// allocates them.
+    fn check_block_size(
+        &self,
+        part: usize,
+        block: &CompressedBlock,
+    ) -> std::result::Result<(), String> {
+        let header = self.header(part);
+        let packed = match block {
+            CompressedBlock::ScanLine(b) => b.compressed_pixels_le.len(),
+            CompressedBlock::Tile(b) => b.compressed_pixels_le.len(),
+            // Deep sizes are checked where they are unpacked (`io::deep`).
+            _ => return Ok(()),
+        };
+        let bounds = header
+            .get_block_data_indices(block)
+            .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
+            .map_err(|e| format!("block coordinates: {e}"))?;
+        check_inflation(
+            header.compression,
+            packed,
+            bounds.size.area() * header.channels.bytes_per_pixel,
+        )
     }
 
     /// Chunk `index` of a ZIP or ZIPS `part`, checked to decompress (size and
@@ -390,24 +462,50 @@ fn validate(meta: &MetaData) -> exr::error::UnitResult {
     }
 }
 
-/// Sizes a damaged header could inflate, checked before anything is allocated.
-fn check_header_sizes(header: &Header) -> std::result::Result<(), String> {
+/// Sizes a damaged header could inflate, checked before anything is allocated:
+/// a block stays under `MAX_BLOCK_BYTES`, and a flat part's pixels must fit in
+/// what the file's `chunk_bytes` bytes of chunks can decompress to. Without
+/// the latter, a few kilobytes claiming a data window millions of pixels wide
+/// would make every strip, and every decoder thread, allocate hundreds of
+/// megabytes.
+fn check_header_sizes(header: &Header, chunk_bytes: u64) -> std::result::Result<(), String> {
     let window: IntegerBounds = header.data_window();
     if window.size.width() == 0 || window.size.height() == 0 {
         return Err("empty data window".into());
     }
-    if !header.deep {
-        let block_bytes = header.max_block_byte_size();
-        if block_bytes > MAX_BLOCK_BYTES {
-            return Err(format!(
-                "a block of {} x {} pixels would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
-                window.size.width(),
-                match header.blocks {
-                    BlockDescription::ScanLines => header.compression.scan_lines_per_block(),
-                    BlockDescription::Tiles(t) => t.tile_size.height(),
-                }
-            ));
-        }
+    if header.deep {
+        return Ok(());
+    }
+    let block_bytes = header.max_block_byte_size();
+    if block_bytes > MAX_BLOCK_BYTES {
+        return Err(format!(
+            "a block of {} x {} pixels would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
+            window.size.width(),
+            match header.blocks {
+                BlockDescription::ScanLines => header.compression.scan_lines_per_block(),
+                BlockDescription::Tiles(t) => t.tile_size.height(),
+            }
+        ));
+    }
+    let pixel_bytes: u128 = header
+        .channels
+        .list
+        .iter()
+        .map(|c| {
+            c.subsampled_resolution(window.size).area() as u128
+                * c.sample_type.bytes_per_sample() as u128
+        })
+        .sum();
+    let most = chunk_bytes as u128 * max_inflation(header.compression) as u128;
+    if pixel_bytes > most {
+        return Err(format!(
+            "a data window of {} x {} pixels takes {pixel_bytes} bytes, more than the file's \
+             {chunk_bytes} bytes of chunks can hold ({}: at most {} per byte)",
+            window.size.width(),
+            window.size.height(),
+            header.compression,
+            max_inflation(header.compression)
+        ));
     }
     Ok(())
 }
