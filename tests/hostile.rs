@@ -254,3 +254,28 @@ fn a_chunk_too_small_for_its_block_is_refused_before_it_is_inflated() {
         "{message}"
     );
 }
+
+#[test]
+fn inputs_so_far_apart_that_the_result_could_not_be_read_back_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let near = d.join("near.exr");
+    let far = d.join("far.exr");
+    generate(&near, "bg", (128, 64), &["--compression", "zip"]);
+    generate(
+        &far,
+        "bg",
+        (128, 64),
+        &["--compression", "zip", "--origin", "3000000,0"],
+    );
+    let out = d.join("out.exr");
+    // 3 million columns x 16 lines x 12 bytes: blocks over the 512 MiB limit.
+    let result = limited(&["over", s(&near), s(&far), "-o", s(&out), "--threads", "8"]);
+    let message = stderr(&result);
+    assert_eq!(result.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("near.exr, ") && message.contains("far.exr): the result's data window"),
+        "{message}"
+    );
+    assert!(!out.exists());
+}

@@ -5,7 +5,7 @@ use super::deep_input::DeepInput;
 use super::graph::{Graph, Node};
 use crate::error::{Error, Kind, Result};
 use crate::io::parts::choose_part;
-use crate::io::reader::ExrFile;
+use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
 use exr::meta::attribute::Text;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
@@ -18,6 +18,11 @@ use std::sync::Arc;
 /// Raw output bytes a strip aims for: big enough to amortise per-strip work,
 /// small enough that the strips in flight stay a few megabytes.
 const STRIP_BYTES: usize = 1 << 20;
+
+/// Most raw output bytes a strip takes to give every thread a block: past it
+/// (blocks of several MiB, on windows tens of thousands of pixels wide) a strip
+/// has fewer blocks, so the memory in flight does not grow with the threads.
+const MAX_STRIP_BYTES: usize = 64 << 20;
 
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
@@ -152,6 +157,16 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         })
         .collect::<Result<_>>()?;
     let header_of = |i: usize| inputs[i].header(parts[i]);
+    let located = |message: String| {
+        let files: Vec<String> = inputs
+            .iter()
+            .map(|f| f.path.display().to_string())
+            .collect();
+        Error::new(
+            Kind::Input,
+            format!("frame {frame} ({}): {message}", files.join(", ")),
+        )
+    };
     let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
         .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
         .collect::<Result<_>>()?;
@@ -177,16 +192,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         if let Node::Op { op, inputs: args } = node {
             let lists: Vec<&[ChannelDescription]> =
                 args.iter().map(|&n| channels[n].as_slice()).collect();
-            op.check(&lists).map_err(|m| {
-                let files: Vec<String> = inputs
-                    .iter()
-                    .map(|f| f.path.display().to_string())
-                    .collect();
-                Error::new(
-                    Kind::Input,
-                    format!("frame {frame} ({}): {m}", files.join(", ")),
-                )
-            })?;
+            op.check(&lists).map_err(located)?;
         }
     }
     let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
@@ -231,10 +237,18 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
     };
+    // Inputs far apart can make the result far wider than any of them: its
+    // blocks get the limit a reader puts on blocks.
     let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
-    let blocks = STRIP_BYTES
-        .div_ceil(block_bytes.max(1))
-        .max(rayon::current_num_threads());
+    if block_bytes > MAX_BLOCK_BYTES {
+        return Err(located(format!(
+            "the result's data window is {} pixels wide (inputs far apart?): its blocks of \
+             {lines} lines would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
+            window.size.width()
+        )));
+    }
+    let threads = rayon::current_num_threads().min(MAX_STRIP_BYTES / block_bytes.max(1));
+    let blocks = STRIP_BYTES.div_ceil(block_bytes.max(1)).max(threads);
     Ok(FramePlan {
         frame,
         label,
