@@ -1,10 +1,12 @@
-//! Hostile input: real files truncated at many offsets and with single bytes
-//! of their headers and offset tables changed. Every case ends within a
-//! bounded time, under a memory limit, with success or a one-line error
-//! naming the file: never a panic, an abort or a hang.
+//! Hostile input: real files truncated at many offsets (before or while they
+//! are read), with single bytes of their headers and offset tables changed, or
+//! with sizes that would make us allocate far more than the file holds. Every
+//! case ends within a bounded time, under a memory limit, with success or a
+//! one-line error naming the file: never a panic, an abort, a signal or a hang.
 
 mod common;
 use common::*;
+use exrcomp::io::reader::ExrFile;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -166,4 +168,119 @@ fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
         "{}",
         stderr(&out)
     );
+}
+
+#[test]
+fn an_input_cut_short_while_it_is_read_is_an_input_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("plate.exr");
+    generate(&path, "bg", (512, 256), &["--compression", "zip"]);
+    let file = ExrFile::open(&path, Some(7)).unwrap();
+    let count = file.header(0).chunk_count;
+    // Another process rewrites the file after we opened it.
+    let len = std::fs::metadata(&path).unwrap().len();
+    let cut = std::fs::OpenOptions::new().write(true).open(&path).unwrap();
+    cut.set_len(len / 4).unwrap();
+    let named = |e: exrcomp::error::Error| {
+        assert_eq!(e.kind, exrcomp::error::Kind::Input, "{e}");
+        assert!(e.message.contains("plate.exr (frame 7)"), "{e}");
+    };
+    for k in count / 2..count {
+        named(file.decode_chunk(0, k).unwrap_err());
+        named(file.checked_zip_chunk(0, k).unwrap_err());
+        named(file.unpack_zip_chunk(0, k, |_| ()).unwrap_err());
+        named(file.read_chunk(0, k).unwrap_err());
+    }
+    named(file.check_part(0).unwrap_err());
+}
+
+/// A small ZIP file whose data window claims `width` columns: its chunks
+/// hold a few kilobytes but would decompress to hundreds of megabytes.
+fn far_too_wide(path: &Path, width: i32) {
+    generate(path, "bg", (128, 256), &["--compression", "zip"]);
+    let mut bytes = std::fs::read(path).unwrap();
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes.windows(key.len()).position(|w| w == key).unwrap() + key.len() + 4;
+    let x0 = i32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
+    bytes[at + 8..at + 12].copy_from_slice(&(x0 + width - 1).to_le_bytes());
+    std::fs::write(path, bytes).unwrap();
+}
+
+#[test]
+fn a_data_window_wider_than_the_file_could_hold_is_refused_at_any_thread_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let bad = d.join("wide.exr");
+    far_too_wide(&bad, 1 << 21);
+    let good = d.join("good.exr");
+    generate(&good, "bg", (128, 256), &["--compression", "zip"]);
+    let out = d.join("out.exr");
+    for threads in ["2", "8"] {
+        for args in [
+            vec!["transcode", s(&bad)],
+            vec!["over", s(&bad), s(&good)],
+            vec!["over", s(&good), s(&bad)],
+        ] {
+            let mut args = args.clone();
+            args.extend(["-o", s(&out), "--threads", threads, "-q"]);
+            // Under the 4 GiB limit: blocks sized from the window would not fit.
+            let result = limited(&args);
+            let message = stderr(&result);
+            assert_eq!(result.status.code(), Some(3), "{args:?}: {message}");
+            assert!(message.contains("wide.exr"), "{message}");
+            assert_eq!(message.lines().count(), 1, "{message}");
+            assert!(!out.exists());
+            assert_eq!(
+                std::fs::read_dir(d).unwrap().count(),
+                2,
+                "no temporary left"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_chunk_too_small_for_its_block_is_refused_before_it_is_inflated() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("small-chunk.exr");
+    // ZIP blocks of 16 lines x 128 pixels x 12 bytes: 24576 bytes, more
+    // than deflate can make of the 8 bytes chunk 0 is then said to hold.
+    generate(&path, "bg", (128, 64), &["--compression", "zip"]);
+    let mut bytes = std::fs::read(&path).unwrap();
+    let (_, first) = offset_table(&bytes);
+    bytes[first + 4..first + 8].copy_from_slice(&8i32.to_le_bytes());
+    std::fs::write(&path, &bytes).unwrap();
+    let out = limited(&["info", s(&path)]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("small-chunk.exr: chunk 0")
+            && message.contains("8 bytes cannot hold the block's 24576 bytes"),
+        "{message}"
+    );
+}
+
+#[test]
+fn inputs_so_far_apart_that_the_result_could_not_be_read_back_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let near = d.join("near.exr");
+    let far = d.join("far.exr");
+    generate(&near, "bg", (128, 64), &["--compression", "zip"]);
+    generate(
+        &far,
+        "bg",
+        (128, 64),
+        &["--compression", "zip", "--origin", "3000000,0"],
+    );
+    let out = d.join("out.exr");
+    // 3 million columns x 16 lines x 12 bytes: blocks over the 512 MiB limit.
+    let result = limited(&["over", s(&near), s(&far), "-o", s(&out), "--threads", "8"]);
+    let message = stderr(&result);
+    assert_eq!(result.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("near.exr, ") && message.contains("far.exr): the result's data window"),
+        "{message}"
+    );
+    assert!(!out.exists());
 }

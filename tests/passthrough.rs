@@ -128,10 +128,10 @@ fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
     // Flip a byte inside chunk 0's deflate stream (after its 8-byte header):
     // the chunk still has its size, only decompressing finds the damage.
     let file = ExrFile::open(&bg, None).unwrap();
-    let at = file.chunk_bytes(0, 0..1);
+    let at = file.chunk_range(0, 0);
     drop(file);
     let mut bytes = std::fs::read(&bg).unwrap();
-    let middle = at.start + 8 + (at.end - at.start - 8) / 2;
+    let middle = (at.start + 8 + (at.end - at.start - 8) / 2) as usize;
     bytes[middle] ^= 0x5a;
     std::fs::write(&bg, bytes).unwrap();
     let out = run(&[

@@ -1,6 +1,6 @@
 //! Turns an input file's chunks into strips of rows in the output's columns:
-//! chunks are decompressed in parallel, each exactly once, and their mapped
-//! pages are released as soon as the rows are copied out.
+//! chunks are read and decompressed in parallel, each exactly once, and
+//! their buffers freed as soon as the rows are copied out.
 
 use super::deep_input::DeepInput;
 use super::strip::{Rows, Samples};
@@ -22,13 +22,6 @@ pub struct InputCursor {
     window: IntegerBounds,
     /// The last decoded chunk, kept when it reaches into the next strip.
     carried: Option<(usize, UncompressedBlock)>,
-    /// Chunks below this index have been copied out.
-    done: usize,
-    /// The file bytes of all chunks copied out so far. The whole span is
-    /// released each time: the kernel maps pages around each fault (large
-    /// folios, fault-around), so pages of chunks released earlier come back
-    /// when neighbouring chunks are read. Releasing unmapped pages is cheap.
-    released: Option<Range<usize>>,
     /// Set for a deep input: strips come from flattening its samples.
     deep: Option<Arc<DeepInput>>,
 }
@@ -41,8 +34,6 @@ impl InputCursor {
             part,
             window,
             carried: None,
-            done: 0,
-            released: None,
             deep: None,
         }
     }
@@ -145,8 +136,7 @@ pub fn decode_strip(
 
 impl InputCursor {
     /// The strip of rows `rows` from `blocks` (this input's decoded chunks,
-    /// taken); keeps the last one when it reaches into the next strip and
-    /// releases the file bytes read.
+    /// taken); keeps the last one when it reaches into the next strip.
     fn strip(
         &mut self,
         columns: (i32, usize),
@@ -170,7 +160,6 @@ impl InputCursor {
             copy_block(block, window, &mut strip, rows);
         }
         // The last chunk may hold rows of the next strip: keep it decoded.
-        let needed = self.chunks_for(rows);
         let window_end = window.end().y();
         if let Some(last) = blocks.drain(..).max_by_key(|(k, _)| *k) {
             let block_end = window.position.y()
@@ -179,26 +168,7 @@ impl InputCursor {
                 self.carried = Some(last);
             }
         }
-        let done = match &self.carried {
-            Some((k, _)) => *k,
-            None => needed.end,
-        };
-        self.release_before(done);
         Ok(strip)
-    }
-
-    /// Marks chunks below `done` as copied out and releases their pages.
-    fn release_before(&mut self, done: usize) {
-        if done > self.done {
-            let bytes = self.file.chunk_bytes(self.part, self.done..done);
-            let span = match self.released.take() {
-                Some(r) => r.start.min(bytes.start)..r.end.max(bytes.end),
-                None => bytes,
-            };
-            self.file.release_bytes(span.clone());
-            self.released = Some(span);
-            self.done = done;
-        }
     }
 
     /// Whether strip `rows` can be decoded straight into its planes: ZIP or
@@ -223,7 +193,7 @@ impl InputCursor {
     /// Strip `rows` decoded straight into new planes, chunks in parallel:
     /// each chunk's bytes are interleaved from its decompressed halves to
     /// their rows, with no block buffer, copy or zero fill (see `direct`).
-    fn decode_direct(&mut self, columns: (i32, usize), rows: &Range<i32>) -> Result<Rows> {
+    fn decode_direct(&self, columns: (i32, usize), rows: &Range<i32>) -> Result<Rows> {
         let (file, part) = (&self.file, self.part);
         let header = file.header(part);
         let channels = header.channels.list.to_vec();
@@ -274,7 +244,6 @@ impl InputCursor {
             // above: the chunks' rows are exactly the strip's).
             unsafe { plane.set_len(width * height) };
         }
-        self.release_before(chunks.end);
         Ok(Rows {
             x: columns.0,
             y: rows.start,

@@ -20,6 +20,11 @@ use std::sync::Arc;
 /// small enough that the strips in flight stay a few megabytes.
 const STRIP_BYTES: usize = 1 << 20;
 
+/// Most raw output bytes a strip takes to give every thread a block: past it
+/// (blocks of several MiB, on windows tens of thousands of pixels wide) a strip
+/// has fewer blocks, so the memory in flight does not grow with the threads.
+const MAX_STRIP_BYTES: usize = 64 << 20;
+
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
     pub inputs: Vec<FramePattern>,
@@ -190,6 +195,16 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         })
         .collect::<Result<_>>()?;
     let header_of = |i: usize| inputs[i].header(parts[i]);
+    let located = |message: String| {
+        let files: Vec<String> = inputs
+            .iter()
+            .map(|f| f.path.display().to_string())
+            .collect();
+        Error::new(
+            Kind::Input,
+            format!("frame {frame} ({}): {message}", files.join(", ")),
+        )
+    };
     let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
         .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
         .collect::<Result<_>>()?;
@@ -215,16 +230,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         if let Node::Op { op, inputs: args } = node {
             let lists: Vec<&[ChannelDescription]> =
                 args.iter().map(|&n| channels[n].as_slice()).collect();
-            op.check(&lists).map_err(|m| {
-                let files: Vec<String> = inputs
-                    .iter()
-                    .map(|f| f.path.display().to_string())
-                    .collect();
-                Error::new(
-                    Kind::Input,
-                    format!("frame {frame} ({}): {m}", files.join(", ")),
-                )
-            })?;
+            op.check(&lists).map_err(located)?;
         }
     }
     let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
@@ -285,21 +291,23 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
     };
+    // Never write a file the reader would refuse, nor allocate for it. From
+    // inputs, a result far wider than any of them (inputs far apart) is an
+    // input problem; a generated image asked that wide, a usage error.
     let block_bytes = (window.size.width() * lines).saturating_mul(header.channels.bytes_per_pixel);
-    // Never write a file the reader would refuse (and never allocate for it).
     if block_bytes > MAX_BLOCK_BYTES {
-        return Err(Error::new(
-            Kind::Usage,
-            format!(
-                "frame {frame}: an output block of {} x {lines} pixels would take {block_bytes} bytes, \
-                 over the {MAX_BLOCK_BYTES}-byte limit: make the image narrower",
-                window.size.width()
-            ),
-        ));
+        let message = format!(
+            "the result's data window is {} pixels wide: its blocks of {lines} lines would take \
+             {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
+            window.size.width()
+        );
+        return Err(match inputs.is_empty() {
+            true => Error::usage(format!("frame {frame}: {message}")),
+            false => located(message),
+        });
     }
-    let blocks = STRIP_BYTES
-        .div_ceil(block_bytes.max(1))
-        .max(rayon::current_num_threads());
+    let threads = rayon::current_num_threads().min(MAX_STRIP_BYTES / block_bytes.max(1));
+    let blocks = STRIP_BYTES.div_ceil(block_bytes.max(1)).max(threads);
     Ok(FramePlan {
         frame,
         label,

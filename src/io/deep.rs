@@ -2,7 +2,7 @@
 //! unpack to one count per pixel, never decreasing, and the sample data to
 //! exactly what those counts add up to), and decoding into samples.
 
-use super::reader::MAX_BLOCK_BYTES;
+use super::reader::{check_inflation, MAX_BLOCK_BYTES};
 use super::zip;
 use exr::block::chunk::CompressedDeepScanLineBlock;
 use exr::meta::attribute::SampleType;
@@ -59,6 +59,7 @@ pub fn check_deep_scanline(
 /// Deep data allows only none, RLE, ZIPS and ZIP; a part smaller unpacked
 /// than packed is stored raw.
 fn unpack(compression: Compression, packed: &[u8], expected: usize) -> Result<Vec<u8>, String> {
+    check_inflation(compression, packed.len(), expected)?;
     if packed.len() == expected {
         return Ok(packed.to_vec());
     }

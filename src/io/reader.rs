@@ -1,5 +1,9 @@
-//! A memory-mapped EXR file: headers, offset tables checked against the file,
-//! and chunks read and decompressed one at a time on demand.
+//! An EXR file read with positioned reads (`pread`): headers, offset tables
+//! checked against the file, and chunks read and decompressed one at a time on
+//! demand. Each read takes exactly the bytes it needs into a buffer that is
+//! freed after use, so resident memory does not grow with the file, and a file
+//! cut short by another process while we read it is an input error, where a
+//! memory map would kill the process with SIGBUS.
 
 use super::zip;
 use crate::error::{Error, Result};
@@ -12,10 +16,11 @@ use exr::meta::header::Header;
 use exr::meta::BlockDescription;
 use exr::meta::MetaData;
 use exr::prelude::Compression;
-use memmap2::{Mmap, UncheckedAdvice};
 use rayon::prelude::*;
 use std::fs::File;
+use std::io::{BufReader, Read};
 use std::ops::Range;
+use std::os::unix::fs::FileExt;
 use std::path::{Path, PathBuf};
 
 /// Largest decompressed block accepted. A header field can claim anything; this
@@ -23,10 +28,56 @@ use std::path::{Path, PathBuf};
 /// float RGBA block of 32 lines is 32 MiB, so real files stay far below it.
 pub const MAX_BLOCK_BYTES: usize = 512 << 20;
 
+/// The most bytes one compressed byte of `compression` can decode to: a
+/// chunk claiming more is damaged, and is refused before anything sized from
+/// the claim is allocated.
+fn max_inflation(compression: Compression) -> usize {
+    match compression {
+        Compression::Uncompressed => 1,
+        // A repeat run: 2 bytes give at most 128.
+        Compression::RLE => 64,
+        // Deflate's limit: a 258-byte match in 2 bits (1032:1).
+        Compression::ZIP1 | Compression::ZIP16 => 1032,
+        // Huffman: a 1-bit run code and its 8-bit count repeat the last
+        // 16-bit value up to 255 times (510 bytes in 9 bits).
+        Compression::PIZ => 454,
+        // Deflate of samples whose floats are cut to 24 bits.
+        Compression::PXR24 => 1032 * 4 / 3,
+        // A flat 4x4 half block (32 bytes) in 3 bytes.
+        Compression::B44 | Compression::B44A => 11,
+        // Unclear (DWAA, DWAB): the loosest case found, a deflated 2-byte DC
+        // coefficient per 8x8 block of float samples (256 bytes); the file's
+        // size bounds the rest (`check_header_sizes`).
+        _ => 1032 * 128,
+    }
+}
+
+/// Checks that `packed` bytes of `compression` can hold `raw` bytes (stored
+/// raw, or within the codec's ratio).
+pub fn check_inflation(
+    compression: Compression,
+    packed: usize,
+    raw: usize,
+) -> std::result::Result<(), String> {
+    let fits = packed == raw
+        || (compression != Compression::Uncompressed
+            && raw as u128 <= packed as u128 * max_inflation(compression) as u128);
+    if fits {
+        Ok(())
+    } else {
+        Err(format!(
+            "{packed} bytes cannot hold the block's {raw} bytes ({compression}: at most {} per byte)",
+            max_inflation(compression)
+        ))
+    }
+}
+
 pub struct ExrFile {
     pub path: PathBuf,
     pub frame: Option<i64>,
-    mmap: Mmap,
+    file: File,
+    /// The file's length when opened: the offsets are checked against it.
+    len: u64,
     pub meta: MetaData,
     /// Per part: the file offset of each chunk, in increasing-y (table) order.
     offsets: Vec<Vec<u64>>,
@@ -34,51 +85,67 @@ pub struct ExrFile {
     sorted_offsets: Vec<u64>,
 }
 
+/// The file from byte `at` on, as a `Read` of positioned reads (the header
+/// parser reads as far as it needs).
+struct ReadFrom<'a> {
+    file: &'a File,
+    at: u64,
+}
+
+impl Read for ReadFrom<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.file.read_at(buf, self.at)?;
+        self.at += n as u64;
+        Ok(n)
+    }
+}
+
 impl ExrFile {
-    /// Maps the file, reads and validates its headers and offset tables.
+    /// Opens the file, reads and validates its headers and offset tables.
     pub fn open(path: &Path, frame: Option<i64>) -> Result<Self> {
         let err = |message: String| Error::input(path, frame, message);
         let file = File::open(path).map_err(|e| err(format!("cannot open: {e}")))?;
-        // SAFETY: the map is read-only; a file changed by another process while we
-        // read it gives wrong pixels or a decode error, never unsafety in our code,
-        // since every slice is bounds-checked against the length taken here.
-        let mmap = unsafe { Mmap::map(&file) }.map_err(|e| err(format!("cannot map: {e}")))?;
-        let file_len = mmap.len();
+        let len = file
+            .metadata()
+            .map_err(|e| err(format!("cannot open: {e}")))?
+            .len();
 
-        let mut rest: &[u8] = &mmap[..];
-        let meta = catch_panic(|| MetaData::read_from_buffered(&mut rest, false))
+        let mut reader = BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
+        let meta = catch_panic(|| MetaData::read_from_buffered(&mut reader, false))
             .map_err(|p| err(format!("not a readable EXR header (decoder panic: {p})")))?
             .map_err(|e| err(format!("not a readable EXR header: {e}")))?;
-        let table_start = file_len - rest.len();
+        let table_start = reader.get_ref().at - reader.buffer().len() as u64;
         validate(&meta).map_err(|e| err(format!("invalid EXR header: {e}")))?;
 
-        for (index, header) in meta.headers.iter().enumerate() {
-            check_header_sizes(header).map_err(|m| err(format!("part {index}: {m}")))?;
-        }
-
         let total_chunks: usize = meta.headers.iter().map(|h| h.chunk_count).sum();
-        let table_end = total_chunks
+        let table_end = (total_chunks as u64)
             .checked_mul(8)
             .and_then(|n| n.checked_add(table_start))
-            .filter(|&end| end <= file_len)
+            .filter(|&end| end <= len)
             .ok_or_else(|| {
                 err(format!(
-                    "truncated: the header announces {total_chunks} chunks but the file has {file_len} bytes"
+                    "truncated: the header announces {total_chunks} chunks but the file has {len} bytes"
                 ))
             })?;
+        for (index, header) in meta.headers.iter().enumerate() {
+            check_header_sizes(header, len - table_end)
+                .map_err(|m| err(format!("part {index}: {m}")))?;
+        }
 
+        let table = read_at(&file, table_start, total_chunks * 8)
+            .map_err(|m| err(format!("the offset table: {m}")))?;
+        let mut entries = table
+            .chunks_exact(8)
+            .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")));
         let mut offsets = Vec::with_capacity(meta.headers.len());
-        let mut cursor = table_start;
         for (part, header) in meta.headers.iter().enumerate() {
             let mut table = Vec::with_capacity(header.chunk_count);
             for index in 0..header.chunk_count {
-                let bytes: [u8; 8] = mmap[cursor..cursor + 8].try_into().expect("8 bytes");
-                cursor += 8;
-                let offset = u64::from_le_bytes(bytes);
-                if offset < table_end as u64 || offset >= file_len as u64 {
+                let offset = entries.next().expect("one entry per chunk");
+                if offset < table_end || offset >= len {
                     return Err(err(format!(
                         "truncated or damaged: part {part} chunk {index} is listed at byte {offset}, \
-                         outside the chunk area {table_end}..{file_len}"
+                         outside the chunk area {table_end}..{len}"
                     )));
                 }
                 table.push(offset);
@@ -91,7 +158,8 @@ impl ExrFile {
         Ok(ExrFile {
             path: path.to_path_buf(),
             frame,
-            mmap,
+            file,
+            len,
             meta,
             offsets,
             sorted_offsets,
@@ -102,41 +170,62 @@ impl ExrFile {
         &self.meta.headers[part]
     }
 
-    pub fn file_len(&self) -> usize {
-        self.mmap.len()
+    pub fn file_len(&self) -> u64 {
+        self.len
     }
 
     pub fn error(&self, message: impl std::fmt::Display) -> Error {
         Error::input(&self.path, self.frame, message)
     }
 
+    /// The bytes chunk `index` of `part` may occupy: from its offset to the
+    /// next-higher offset of any chunk, or to the end of the file.
+    pub fn chunk_range(&self, part: usize, index: usize) -> Range<u64> {
+        let start = self.offsets[part][index];
+        let next = self.sorted_offsets.partition_point(|&o| o <= start);
+        start..self.sorted_offsets.get(next).copied().unwrap_or(self.len)
+    }
+
     /// Reads chunk `index` of `part` (table order) without decompressing it.
     pub fn read_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
-        let offset = self.offsets[part][index] as usize;
-        self.check_chunk_sizes(part, offset).map_err(|m| {
+        let offset = self.offsets[part][index];
+        let damaged = |m: &dyn std::fmt::Display| {
             self.error(format!(
                 "chunk {index} at byte {offset} is truncated or damaged: {m}"
             ))
-        })?;
-        let mut bytes = &self.mmap[offset..];
-        let chunk = catch_panic(|| Chunk::read(&mut bytes, &self.meta))
-            .map_err(|p| {
-                self.error(format!(
-                    "chunk {index} at byte {offset}: decoder panic: {p}"
-                ))
-            })?
-            .map_err(|e| {
-                self.error(format!(
-                    "chunk {index} at byte {offset} is truncated or damaged: {e}"
-                ))
-            })?;
+        };
+        let (fields, data) = self
+            .read_chunk_bytes(part, index)
+            .map_err(|m| damaged(&m))?;
+        let header = self.header(part);
+        let chunk = if header.deep || header.blocks.has_tiles() {
+            let bytes = [fields, data].concat();
+            catch_panic(|| Chunk::read(&mut &bytes[..], &self.meta))
+                .map_err(|p| {
+                    self.error(format!(
+                        "chunk {index} at byte {offset}: decoder panic: {p}"
+                    ))
+                })?
+                .map_err(|e| damaged(&e))?
+        } else {
+            // A flat scanline chunk, as `Chunk::read` would make it, but with
+            // its data read straight into the block.
+            let at = fields.len() - 8;
+            let y = i32::from_le_bytes(fields[at..at + 4].try_into().expect("4 bytes"));
+            Chunk {
+                layer_index: part,
+                compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
+                    y_coordinate: y,
+                    compressed_pixels_le: data,
+                }),
+            }
+        };
         if chunk.layer_index != part {
             return Err(self.error(format!(
                 "chunk {index} at byte {offset} belongs to part {} instead of part {part}",
                 chunk.layer_index
             )));
         }
-        let header = self.header(part);
         let y = match &chunk.compressed_block {
             CompressedBlock::ScanLine(block) => Some(block.y_coordinate),
             CompressedBlock::DeepScanLine(block) => Some(block.y_coordinate),
@@ -151,45 +240,90 @@ impl ExrFile {
                 )));
             }
         }
+        self.check_block_size(part, &chunk.compressed_block)
+            .map_err(|m| damaged(&m))?;
         Ok(chunk)
     }
 
-    /// Checks the data sizes a chunk declares against the bytes left in the
-    /// file, before anything sized from them is allocated.
-    fn check_chunk_sizes(&self, part: usize, offset: usize) -> std::result::Result<(), String> {
+    /// The fixed fields (part number, coordinates, sizes) and the data of
+    /// chunk `index` of `part`, read once the sizes the fields declare are
+    /// checked against the chunk's room in the file.
+    fn read_chunk_bytes(
+        &self,
+        part: usize,
+        index: usize,
+    ) -> std::result::Result<(Vec<u8>, Vec<u8>), String> {
         let header = self.header(part);
-        let mut at = offset + if self.meta.headers.len() > 1 { 4 } else { 0 };
-        at += if header.blocks.has_tiles() { 16 } else { 4 };
-        let field = |at: usize, len: usize| -> std::result::Result<u64, String> {
-            let bytes = self
-                .mmap
-                .get(at..at + len)
-                .ok_or("the chunk header is cut off")?;
-            Ok(match len {
-                4 => i32::from_le_bytes(bytes.try_into().expect("4 bytes")).max(-1) as i64 as u64,
-                _ => u64::from_le_bytes(bytes.try_into().expect("8 bytes")),
-            })
+        let range = self.chunk_range(part, index);
+        let room = range.end - range.start;
+        let multipart = self.meta.headers.len() > 1;
+        let coordinates = if header.blocks.has_tiles() { 16 } else { 4 };
+        // Deep: the packed offset table and packed samples follow three u64 sizes.
+        let sizes = if header.deep { 24 } else { 4 };
+        let fixed = if multipart { 4 } else { 0 } + coordinates + sizes;
+        if room < fixed as u64 {
+            return Err("the chunk header is cut off".into());
+        }
+        let fields = read_at(&self.file, range.start, fixed)?;
+        let number = |at: usize, len: usize| -> u64 {
+            match len {
+                4 => i32::from_le_bytes(fields[at..at + 4].try_into().expect("4 bytes")).max(-1)
+                    as i64 as u64,
+                _ => u64::from_le_bytes(fields[at..at + 8].try_into().expect("8 bytes")),
+            }
         };
-        let (data_start, declared) = if header.deep {
-            // Packed offset table and packed samples follow three u64 sizes.
-            let total = field(at, 8)?
-                .checked_add(field(at + 8, 8)?)
-                .ok_or("sizes overflow")?;
-            (at + 24, total)
+        if multipart && number(0, 4) != part as u64 {
+            return Err(format!(
+                "it belongs to part {} instead of part {part}",
+                number(0, 4) as i64
+            ));
+        }
+        let at = fixed - sizes;
+        let declared = if header.deep {
+            number(at, 8)
+                .checked_add(number(at + 8, 8))
+                .ok_or("sizes overflow")?
         } else {
-            let size = field(at, 4)?;
+            let size = number(at, 4);
             if size == u64::MAX {
                 return Err("negative data size".into());
             }
-            (at + 4, size)
+            size
         };
-        let left = self.mmap.len().saturating_sub(data_start) as u64;
+        let left = room - fixed as u64;
         if declared > left {
             return Err(format!(
-                "it declares {declared} bytes but the file has {left} left"
+                "it declares {declared} bytes but only {left} lie before the next chunk or the end of the file"
             ));
         }
-        Ok(())
+        let data = read_at(&self.file, range.start + fixed as u64, declared as usize)?;
+        Ok((fields, data))
+    }
+
+    /// Checks the bytes a flat block decompresses to against what its
+    /// compressed bytes can hold (`check_inflation`), before a decoder
+    /// allocates them.
+    fn check_block_size(
+        &self,
+        part: usize,
+        block: &CompressedBlock,
+    ) -> std::result::Result<(), String> {
+        let header = self.header(part);
+        let packed = match block {
+            CompressedBlock::ScanLine(b) => b.compressed_pixels_le.len(),
+            CompressedBlock::Tile(b) => b.compressed_pixels_le.len(),
+            // Deep sizes are checked where they are unpacked (`io::deep`).
+            _ => return Ok(()),
+        };
+        let bounds = header
+            .get_block_data_indices(block)
+            .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
+            .map_err(|e| format!("block coordinates: {e}"))?;
+        check_inflation(
+            header.compression,
+            packed,
+            bounds.size.area() * header.channels.bytes_per_pixel,
+        )
     }
 
     /// Chunk `index` of a ZIP or ZIPS `part`, checked to decompress (size and
@@ -284,52 +418,34 @@ impl ExrFile {
     }
 
     /// Decodes every chunk of `part` (deep chunks: checks their structure), in
-    /// parallel batches so memory stays bounded.
+    /// parallel; each chunk's bytes are freed once it is checked.
     pub fn check_part(&self, part: usize) -> Result<()> {
-        let count = self.header(part).chunk_count;
-        let batch = rayon::current_num_threads() * 4;
-        for start in (0..count).step_by(batch) {
-            let range = start..(start + batch).min(count);
-            range
-                .clone()
-                .into_par_iter()
-                .try_for_each(|k| -> Result<()> {
-                    if self.header(part).deep {
-                        self.check_deep_chunk(part, k)
-                    } else {
-                        self.decode_chunk(part, k).map(drop)
-                    }
-                })?;
-            self.release_bytes(self.chunk_bytes(part, range));
+        (0..self.header(part).chunk_count)
+            .into_par_iter()
+            .try_for_each(|k| {
+                if self.header(part).deep {
+                    self.check_deep_chunk(part, k)
+                } else {
+                    self.decode_chunk(part, k).map(drop)
+                }
+            })
+    }
+}
+
+/// `len` bytes of `file` from byte `at`. The offsets were checked against the
+/// file's length when it was opened, so a short read means that it shrank since.
+fn read_at(file: &File, at: u64, len: usize) -> std::result::Result<Vec<u8>, String> {
+    let mut bytes = vec![0; len];
+    file.read_exact_at(&mut bytes, at).map_err(|e| {
+        let end = at + len as u64;
+        match e.kind() {
+            std::io::ErrorKind::UnexpectedEof => {
+                format!("the file was cut short while it was read (bytes {at}..{end} are gone)")
+            }
+            _ => format!("cannot read bytes {at}..{end}: {e}"),
         }
-        Ok(())
-    }
-
-    /// The bytes chunks `indices` of `part` occupy in the file (assuming each
-    /// chunk ends where the next-higher offset begins).
-    pub fn chunk_bytes(&self, part: usize, indices: Range<usize>) -> Range<usize> {
-        let table = &self.offsets[part];
-        let start = indices.clone().map(|i| table[i]).min().unwrap_or(0) as usize;
-        let last = indices.map(|i| table[i]).max().unwrap_or(0);
-        let next = self.sorted_offsets.partition_point(|&o| o <= last);
-        let end = self
-            .sorted_offsets
-            .get(next)
-            .map_or(self.mmap.len(), |&o| o as usize);
-        start..end
-    }
-
-    /// Drops the mapped pages of `bytes`, so that resident memory does not
-    /// grow with the file size. A dropped page that is needed again is only
-    /// read back from the page cache.
-    pub fn release_bytes(&self, bytes: Range<usize>) {
-        // SAFETY: the mapping is read-only and file-backed: dropped pages are
-        // re-read from the file on the next access, with the same contents.
-        let _ = unsafe {
-            self.mmap
-                .unchecked_advise_range(UncheckedAdvice::DontNeed, bytes.start, bytes.len())
-        };
-    }
+    })?;
+    Ok(bytes)
 }
 
 /// The exr crate's validation, which refuses deep parts outright; those get
@@ -346,24 +462,50 @@ fn validate(meta: &MetaData) -> exr::error::UnitResult {
     }
 }
 
-/// Sizes a damaged header could inflate, checked before anything is allocated.
-fn check_header_sizes(header: &Header) -> std::result::Result<(), String> {
+/// Sizes a damaged header could inflate, checked before anything is allocated:
+/// a block stays under `MAX_BLOCK_BYTES`, and a flat part's pixels must fit in
+/// what the file's `chunk_bytes` bytes of chunks can decompress to. Without
+/// the latter, a few kilobytes claiming a data window millions of pixels wide
+/// would make every strip, and every decoder thread, allocate hundreds of
+/// megabytes.
+fn check_header_sizes(header: &Header, chunk_bytes: u64) -> std::result::Result<(), String> {
     let window: IntegerBounds = header.data_window();
     if window.size.width() == 0 || window.size.height() == 0 {
         return Err("empty data window".into());
     }
-    if !header.deep {
-        let block_bytes = header.max_block_byte_size();
-        if block_bytes > MAX_BLOCK_BYTES {
-            return Err(format!(
-                "a block of {} x {} pixels would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
-                window.size.width(),
-                match header.blocks {
-                    BlockDescription::ScanLines => header.compression.scan_lines_per_block(),
-                    BlockDescription::Tiles(t) => t.tile_size.height(),
-                }
-            ));
-        }
+    if header.deep {
+        return Ok(());
+    }
+    let block_bytes = header.max_block_byte_size();
+    if block_bytes > MAX_BLOCK_BYTES {
+        return Err(format!(
+            "a block of {} x {} pixels would take {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
+            window.size.width(),
+            match header.blocks {
+                BlockDescription::ScanLines => header.compression.scan_lines_per_block(),
+                BlockDescription::Tiles(t) => t.tile_size.height(),
+            }
+        ));
+    }
+    let pixel_bytes: u128 = header
+        .channels
+        .list
+        .iter()
+        .map(|c| {
+            c.subsampled_resolution(window.size).area() as u128
+                * c.sample_type.bytes_per_sample() as u128
+        })
+        .sum();
+    let most = chunk_bytes as u128 * max_inflation(header.compression) as u128;
+    if pixel_bytes > most {
+        return Err(format!(
+            "a data window of {} x {} pixels takes {pixel_bytes} bytes, more than the file's \
+             {chunk_bytes} bytes of chunks can hold ({}: at most {} per byte)",
+            window.size.width(),
+            window.size.height(),
+            header.compression,
+            max_inflation(header.compression)
+        ));
     }
     Ok(())
 }
