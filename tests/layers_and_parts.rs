@@ -83,7 +83,9 @@ fn parts_are_chosen_by_name_index_view_and_option() {
         &bg,
         &[("right", "right", &bg_right), ("left", "left", &bg_left)],
     );
-    let composite = |inputs: [String; 2], args: &[&str], name: &str| {
+    // Every part of bg comes out: the chosen one composited, the other
+    // exactly bg's, each in its place.
+    let composite = |inputs: [String; 2], args: &[&str], name: &str, part: usize| {
         let path = d.join(format!("{name}.exr"));
         let mut command = vec![
             "over",
@@ -96,19 +98,25 @@ fn parts_are_chosen_by_name_index_view_and_option() {
         command.extend_from_slice(args);
         merge_ok(&command);
         assert_peers_read(&path);
-        read_image(&path)
+        let mut parts = read_parts(&path);
+        assert_eq!(parts.len(), 2, "{name}");
+        assert_identical(&parts[1 - part], [&bg_right, &bg_left][1 - part]);
+        parts.swap_remove(part)
     };
     let with = |suffix: &str| [format!("{}{suffix}", s(&fg)), format!("{}{suffix}", s(&bg))];
     let left = reference_over(&fg_left, &bg_left, false);
-    assert_identical(&composite(with(":left"), &[], "by-name"), &left);
-    assert_identical(&composite(with(":1"), &[], "by-index"), &left);
-    assert_identical(&composite(with(""), &["--view", "left"], "by-view"), &left);
+    assert_identical(&composite(with(":left"), &[], "by-name", 1), &left);
+    assert_identical(&composite(with(":1"), &[], "by-index", 1), &left);
     assert_identical(
-        &composite(with(""), &["--part", "left"], "by-option"),
+        &composite(with(""), &["--view", "left"], "by-view", 1),
+        &left,
+    );
+    assert_identical(
+        &composite(with(""), &["--part", "left"], "by-option", 1),
         &left,
     );
     let right = reference_over(&fg_right, &bg_right, false);
-    assert_identical(&composite(with(""), &[], "first"), &right);
+    assert_identical(&composite(with(""), &[], "first", 0), &right);
 
     let [f, b] = with(":nope");
     let out = run(&["over", &f, &b, "-o", s(&d.join("x.exr"))]);
@@ -118,6 +126,103 @@ fn parts_are_chosen_by_name_index_view_and_option() {
         "{}",
         stderr(&out)
     );
+}
+
+/// A render's AOVs as parts, scanline and tiled, differently compressed:
+/// every command keeps every part, the one worked on in its place and the
+/// others chunk for chunk (the same bytes as the input's chunks).
+#[test]
+fn every_part_is_kept_and_the_others_copied_as_they_are() {
+    use exr::prelude::{Blocks, Compression, Encoding, LineOrder};
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let beauty = random_rgba(61, 0, 0, 37, 29, Kind::Half, true);
+    let diffuse = random_rgba(62, 3, 2, 30, 21, Kind::Float, true);
+    let specular = random_rgba(63, 0, 0, 37, 29, Kind::Half, true);
+    let encoding = |compression, blocks| Encoding {
+        compression,
+        blocks,
+        line_order: LineOrder::Increasing,
+    };
+    let input = d.join("render.exr");
+    write_encoded_parts(
+        &input,
+        &[
+            (
+                "beauty",
+                "main",
+                &beauty,
+                encoding(Compression::ZIP16, Blocks::ScanLines),
+            ),
+            (
+                "diffuse",
+                "main",
+                &diffuse,
+                encoding(Compression::PIZ, Blocks::Tiles(exr::math::Vec2(16, 8))),
+            ),
+            (
+                "specular",
+                "main",
+                &specular,
+                encoding(Compression::RLE, Blocks::ScanLines),
+            ),
+        ],
+    );
+    let parts_in = read_parts(&input);
+    let run_ok = |args: &[&str], output: &Path| {
+        let out = run(args);
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        assert_peers_read(output);
+        read_parts(output)
+    };
+    // transcode, blur and over, each on one part.
+    let output = d.join("transcoded.exr");
+    let parts = run_ok(&["transcode", s(&input), "-o", s(&output), "-q"], &output);
+    assert_eq!(parts.len(), 3);
+    (0..3).for_each(|p| assert_identical(&parts[p], &parts_in[p]));
+
+    let output = d.join("over.exr");
+    let specular_part = format!("{}:specular", s(&input));
+    let parts = run_ok(
+        &[
+            "over",
+            &specular_part,
+            &specular_part,
+            "-o",
+            s(&output),
+            "-q",
+        ],
+        &output,
+    );
+    assert_identical(&parts[2], &reference_over(&specular, &specular, false));
+    (0..2).for_each(|p| assert_identical(&parts[p], &parts_in[p]));
+
+    // The carried parts' chunks are the input's bytes: the tiled part's
+    // offset table points at the same chunks, in the same order.
+    let chunks = |path: &Path, part: usize| {
+        let bytes = std::fs::read(path).unwrap();
+        exr::block::read(std::io::Cursor::new(bytes), false)
+            .unwrap()
+            .all_chunks(false)
+            .unwrap()
+            .map(|c| c.unwrap())
+            .filter(|c| c.layer_index == part)
+            .map(|c| format!("{:?}", c.compressed_block))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(chunks(&output, 1), chunks(&input, 1));
+
+    // Bands of a multi-part file would lose the other parts: refused.
+    let out = run(&[
+        "transcode",
+        s(&input),
+        "-o",
+        s(&d.join("band.exr")),
+        "--rows",
+        "0-16",
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    assert!(stderr(&out).contains("has 3 parts"), "{}", stderr(&out));
 }
 
 /// The display window (position and size) of `path`'s first part.

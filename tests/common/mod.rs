@@ -300,8 +300,7 @@ pub fn random_rgba(
 fn layer(
     img: &Img,
     attributes: LayerAttributes,
-    compression: Compression,
-    line_order: LineOrder,
+    encoding: Encoding,
 ) -> Layer<AnyChannels<FlatSamples>> {
     let channels: Vec<AnyChannel<FlatSamples>> = img
         .channels
@@ -323,17 +322,18 @@ fn layer(
     Layer::new(
         (img.width, img.height),
         attributes,
-        Encoding {
-            compression,
-            blocks: Blocks::ScanLines,
-            line_order,
-        },
+        encoding,
         AnyChannels::sort(channels.into()),
     )
 }
 
 pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order: LineOrder) {
-    let layer = layer(img, LayerAttributes::default(), compression, line_order);
+    let encoding = Encoding {
+        compression,
+        blocks: Blocks::ScanLines,
+        line_order,
+    };
+    let layer = layer(img, LayerAttributes::default(), encoding);
     let mut image = Image::from_layer(layer);
     image.attributes.display_window =
         exr::meta::attribute::IntegerBounds::from_dimensions(img.display);
@@ -342,15 +342,27 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
 
 /// A multi-part file: per part its name, its view and its pixels (ZIP).
 pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
+    let zip = Encoding {
+        compression: Compression::ZIP16,
+        blocks: Blocks::ScanLines,
+        line_order: LineOrder::Increasing,
+    };
+    let parts: Vec<_> = parts.iter().map(|&(n, v, img)| (n, v, img, zip)).collect();
+    write_encoded_parts(path, &parts);
+}
+
+/// A multi-part file: per part its name, its view, its pixels and how they
+/// are stored (compression, scanlines or tiles).
+pub fn write_encoded_parts(path: &Path, parts: &[(&str, &str, &Img, Encoding)]) {
     let layers: Vec<_> = parts
         .iter()
-        .map(|(name, view, img)| {
+        .map(|&(name, view, img, encoding)| {
             let attributes = LayerAttributes {
-                layer_name: Some((*name).into()),
-                view_name: Some((*view).into()),
+                layer_name: Some(name.into()),
+                view_name: Some(view.into()),
                 ..Default::default()
             };
-            layer(img, attributes, Compression::ZIP16, LineOrder::Increasing)
+            layer(img, attributes, encoding)
         })
         .collect();
     let display = exr::meta::attribute::IntegerBounds::from_dimensions(parts[0].2.display);
@@ -359,31 +371,41 @@ pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
 }
 
 pub fn read_image(path: &Path) -> Img {
+    read_parts(path).swap_remove(0)
+}
+
+/// Every part of `path`, in file order.
+pub fn read_parts(path: &Path) -> Vec<Img> {
     let image =
-        exr::prelude::read_first_flat_layer_from_file(path).expect("readable by the exr crate");
-    let layer = &image.layer_data;
-    let channels = layer
-        .channel_data
-        .list
-        .iter()
-        .map(|c| {
-            let samples = match &c.sample_data {
-                FlatSamples::F16(v) => Samples::F16(v.clone()),
-                FlatSamples::F32(v) => Samples::F32(v.clone()),
-                FlatSamples::U32(v) => Samples::U32(v.clone()),
-            };
-            (c.name.to_string(), samples)
-        })
-        .collect();
+        exr::prelude::read_all_flat_layers_from_file(path).expect("readable by the exr crate");
     let display = image.attributes.display_window.size;
-    Img {
-        x: layer.attributes.layer_position.x(),
-        y: layer.attributes.layer_position.y(),
-        width: layer.size.width(),
-        height: layer.size.height(),
-        display: (display.width(), display.height()),
-        channels,
-    }
+    image
+        .layer_data
+        .iter()
+        .map(|layer| {
+            let channels = layer
+                .channel_data
+                .list
+                .iter()
+                .map(|c| {
+                    let samples = match &c.sample_data {
+                        FlatSamples::F16(v) => Samples::F16(v.clone()),
+                        FlatSamples::F32(v) => Samples::F32(v.clone()),
+                        FlatSamples::U32(v) => Samples::U32(v.clone()),
+                    };
+                    (c.name.to_string(), samples)
+                })
+                .collect();
+            Img {
+                x: layer.attributes.layer_position.x(),
+                y: layer.attributes.layer_position.y(),
+                width: layer.size.width(),
+                height: layer.size.height(),
+                display: (display.width(), display.height()),
+                channels,
+            }
+        })
+        .collect()
 }
 
 /// Alpha at a pixel for a layer with channel prefix `prefix`: its own A,
