@@ -1,7 +1,7 @@
 //! The command line.
 
 use crate::params::*;
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, Parser, Subcommand, ValueHint};
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -24,8 +24,10 @@ pub enum Command {
     Over {
         /// Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr), with
         /// `:PART` (name or index) to read one part of a multi-part file.
+        #[arg(value_hint = ValueHint::FilePath)]
         fg: String,
         /// Background: its header, display window and other channels are kept.
+        #[arg(value_hint = ValueHint::FilePath)]
         bg: String,
         #[command(flatten)]
         with: Composite,
@@ -35,8 +37,10 @@ pub enum Command {
         #[arg(long, value_enum)]
         op: crate::ops::merge::MergeOp,
         /// Top input: a file or sequence, `:PART` for a part.
+        #[arg(value_hint = ValueHint::FilePath)]
         a: String,
         /// Bottom input: its header, display window and other channels are kept.
+        #[arg(value_hint = ValueHint::FilePath)]
         b: String,
         /// Blend the result with B: 0 gives B, 1 the result.
         #[arg(long, default_value_t = 1.0, value_parser = |t: &str| MIX.parse::<f32>(t))]
@@ -47,7 +51,7 @@ pub enum Command {
     /// Composite layers L1 over L2 over ... Ln in one pass (L1 on top).
     Stack {
         /// Two or more inputs, top first; the last one's header is kept.
-        #[arg(required = true, num_args = 2..)]
+        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         inputs: Vec<String>,
         #[command(flatten)]
         with: Composite,
@@ -104,8 +108,9 @@ pub enum Command {
     },
     /// The other eye of a stereo pair from one view and its depth.
     Stereo {
+        #[arg(value_hint = ValueHint::FilePath)]
         input: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         /// The eye to make: pixels move right for the left eye, left for the right.
         #[arg(long, value_enum)]
@@ -122,9 +127,9 @@ pub enum Command {
     /// (alpha 0 never in front); Z becomes the nearer depth.
     Zmerge {
         /// Two or more inputs; the last one's header and other channels are kept.
-        #[arg(required = true, num_args = 2..)]
+        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         inputs: Vec<String>,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[arg(long, default_value = "Z")]
         z_channel: String,
@@ -135,18 +140,18 @@ pub enum Command {
     /// with the shadows and light it casts on a proxy of the real scene.
     Diffrender {
         /// I1: the object alone.
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         object: String,
         /// I2: the proxy of the scene, without the object.
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         proxy: String,
         /// I3: the proxy with the object's shadows (and light) on it.
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         with_shadows: String,
         /// P: the real plate; its header and other channels are kept.
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         plate: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         /// G in P - G (I4 - I3).
         #[arg(long, default_value_t = 1.0, allow_hyphen_values = true, value_parser = |t: &str| SHADOW_GAIN.parse::<f32>(t))]
@@ -160,8 +165,9 @@ pub enum Command {
     /// Colour-difference keyer: alpha from how far the screen channel rises
     /// above the other two, the screen taken out of the colour.
     Key {
+        #[arg(value_hint = ValueHint::FilePath)]
         input: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         /// green, blue, or the screen's colour as R,G,B.
         #[arg(long, default_value = "green", value_parser = parse_screen)]
@@ -189,10 +195,11 @@ pub enum Command {
     },
     /// Difference matte: alpha from the difference with a clean plate.
     Diffmatte {
+        #[arg(value_hint = ValueHint::FilePath)]
         input: String,
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         clean_plate: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         /// Differences up to this are background (alpha 0).
         #[arg(long, default_value_t = 0.05, value_parser = |t: &str| THRESHOLD.parse::<f32>(t))]
@@ -208,15 +215,15 @@ pub enum Command {
     /// Triangulation matting: one foreground over two known backgrounds gives
     /// alpha and colour exactly.
     Triangulate {
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         over_a: String,
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         bg_a: String,
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         over_b: String,
-        #[arg(long)]
+        #[arg(value_hint = ValueHint::FilePath, long)]
         bg_b: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
         run: RunArgs,
@@ -228,8 +235,9 @@ pub enum Command {
     /// Flatten a deep file: each pixel's samples composited front to back
     /// (any command reading a deep scanline input flattens it the same way).
     Flatten {
+        #[arg(value_hint = ValueHint::FilePath)]
         input: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
         run: RunArgs,
@@ -237,9 +245,9 @@ pub enum Command {
     /// Merge deep files by depth, sample by sample, then flatten.
     Deepmerge {
         /// Two or more deep files or sequences; the first one's header is kept.
-        #[arg(required = true, num_args = 2..)]
+        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         inputs: Vec<String>,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
         run: RunArgs,
@@ -252,32 +260,34 @@ pub enum Command {
     /// Join band files written with --rows into one file, copying their
     /// compressed chunks (nothing is decoded or re-encoded).
     Stitch {
-        #[arg(required = true, num_args = 2..)]
+        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         bands: Vec<PathBuf>,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: PathBuf,
     },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
+        #[arg(value_hint = ValueHint::FilePath)]
         job: PathBuf,
         /// Write here instead of the job's write node's file.
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: Option<String>,
         #[command(flatten)]
         run: RunArgs,
     },
     /// Read and write a sequence unchanged but for compression (the codec floor).
     Transcode {
+        #[arg(value_hint = ValueHint::FilePath)]
         input: String,
-        #[arg(short, long)]
+        #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
         run: RunArgs,
     },
     /// Describe EXR files and check that every chunk decodes.
     Info {
-        #[arg(required = true)]
+        #[arg(value_hint = ValueHint::FilePath, required = true)]
         files: Vec<PathBuf>,
     },
     /// Generate a synthetic shot and composite it.
@@ -298,6 +308,7 @@ pub enum Command {
     /// Write synthetic test plates (a grainy background or a moving foreground).
     Generate {
         /// Output file or sequence.
+        #[arg(value_hint = ValueHint::FilePath)]
         output: String,
         #[arg(long, value_enum, default_value = "bg")]
         kind: crate::generate::PlateKind,
@@ -320,7 +331,7 @@ pub enum Command {
 #[derive(Args)]
 pub struct Composite {
     /// Output file or sequence.
-    #[arg(short, long)]
+    #[arg(value_hint = ValueHint::FilePath, short, long)]
     pub output: String,
     /// Inputs and output are unpremultiplied (straight) colour.
     #[arg(long)]
@@ -350,8 +361,16 @@ pub struct FarmJob {
     /// Frames per task.
     #[arg(long, default_value_t = 10)]
     pub chunk: usize,
+    /// OpenJD: let the scheduler chunk the frames (a CHUNK[INT] task
+    /// parameter, the TASK_CHUNKING extension) instead of listing the chunks.
+    #[arg(long)]
+    pub task_chunking: bool,
+    /// OpenJD: chunks sized towards this runtime from the ones done
+    /// (implies --task-chunking).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub target_runtime: Option<u32>,
     /// Where the job is written.
-    #[arg(short, long)]
+    #[arg(value_hint = ValueHint::FilePath, short, long)]
     pub output: PathBuf,
     /// The exrcomp command to run, without --frames (after `--`).
     #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
@@ -373,8 +392,9 @@ pub struct Morph {
 /// An operation on one input.
 #[derive(Args)]
 pub struct OneInput {
+    #[arg(value_hint = ValueHint::FilePath)]
     pub input: String,
-    #[arg(short, long)]
+    #[arg(value_hint = ValueHint::FilePath, short, long)]
     pub output: String,
     #[command(flatten)]
     pub layers: LayerArgs,
@@ -433,6 +453,10 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(long)]
     pub json: bool,
+    /// Check every frame's inputs and the outputs, print what would be
+    /// written, and write nothing.
+    #[arg(long)]
+    pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
     #[arg(long, value_parser = parse_rows)]

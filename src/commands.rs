@@ -106,7 +106,8 @@ pub fn run(command: Command) -> Result<()> {
                 &one.layers,
                 &one.run,
             )?;
-            if max_displacement.is_none() {
+            // A dry run reads no pixels.
+            if max_displacement.is_none() && !one.run.dry_run {
                 let measure = blur(0);
                 let names = [vectors.0.as_str(), vectors.1.as_str()];
                 let reach = max_over_rows(&job, 0, names, |u, v| measure.rows_reached(u, v))?;
@@ -245,13 +246,20 @@ pub fn run(command: Command) -> Result<()> {
         }
         Command::Farm { farm } => {
             let (Farm::Openjd(job) | Farm::Opencue(job)) = &farm;
-            let args = farm::absolute_args(&job.command, &working_folder()?)?;
+            let cwd = working_folder()?;
+            let task = farm::task_command(&job.command, &job.frames, &cwd)?;
             let exrcomp = farm::this_exrcomp()?;
             let text = match &farm {
                 Farm::Openjd(_) => {
-                    farm::openjd_template(&exrcomp, &args, &farm::chunks(&job.frames, job.chunk)?)
+                    let tasks = farm::Tasks::new(
+                        &job.frames,
+                        job.chunk,
+                        job.task_chunking,
+                        job.target_runtime,
+                    )?;
+                    farm::openjd_template(&exrcomp, &task, &tasks)
                 }
-                Farm::Opencue(_) => farm::opencue_outline(&exrcomp, &args, &job.frames, job.chunk)?,
+                Farm::Opencue(_) => farm::opencue_outline(&exrcomp, &task, &job.frames, job.chunk)?,
             };
             farm::write_template(&job.output, &text)
         }
@@ -527,6 +535,18 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code).
 fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
+    let (reads, writes) = job.files();
+    refuse_overwriting(reads, writes)?;
+    if run.dry_run {
+        if !run.quiet {
+            eprintln!(
+                "{label}: would write {} to {}",
+                count(job.frames.len(), "frame"),
+                job.output.display()
+            );
+        }
+        return Ok(());
+    }
     let (report, summary) = run_with_progress(job, label, run, summary)?;
     report.finish(&summary);
     if summary.interrupted {
@@ -555,8 +575,6 @@ fn run_with_progress(
     run: &RunArgs,
     summary: Summary,
 ) -> Result<(Report, Summary)> {
-    let (reads, writes) = job.files();
-    refuse_overwriting(reads, writes)?;
     let folders: BTreeSet<PathBuf> = job
         .frames
         .iter()
@@ -775,4 +793,12 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
     })?;
     job.graph = graph(reach);
     run_job(&job, "demo", &run, summary)
+}
+
+/// `n things` or `1 thing`.
+fn count(n: usize, thing: &str) -> String {
+    match n {
+        1 => format!("1 {thing}"),
+        n => format!("{n} {thing}s"),
+    }
 }

@@ -3,22 +3,56 @@
 //! frames it has not finished. Open Job Description templates and OpenCue
 //! outlines.
 
+use crate::cli::Cli;
 use crate::error::{Error, Result};
-use crate::io::sequence::{format_frame_list, parse_frame_list};
+use crate::io::sequence::parse_frame_list;
+use clap::{CommandFactory, Parser, ValueHint};
 use std::path::{Path, PathBuf};
 
-/// The frame lists of the tasks: `chunk` frames of `frames` each, in order.
+/// Most tasks an OpenJD task parameter may list.
+const OPENJD_MAX_TASKS: usize = 1024;
+
+/// The frame lists of the tasks: `chunk` frames of `frames` each, in order,
+/// each as a range expression (`1001-1019:2`, never a long comma list).
 pub fn chunks(frames: &str, chunk: usize) -> Result<Vec<String>> {
     if chunk == 0 {
         return Err(Error::usage("--chunk must be at least 1"));
     }
     let frames = parse_frame_list(frames)?;
-    Ok(frames.chunks(chunk).map(format_frame_list).collect())
+    Ok(frames.chunks(chunk).map(range_expression).collect())
 }
 
-/// `command` with relative file names made absolute (against `cwd`): a task
-/// runs in a session folder of the farm's, not where the template was made.
-pub fn absolute_args(command: &[String], cwd: &Path) -> Result<Vec<String>> {
+/// Frames as runs of one step: `1-5,7,9-21:3`, as exrcomp's `--frames`,
+/// OpenJD's range expressions and OpenCue's ranges (with `x`) read them.
+pub fn range_expression(frames: &[i64]) -> String {
+    let mut runs = Vec::new();
+    let mut i = 0;
+    while i < frames.len() {
+        let step = frames.get(i + 1).map_or(1, |next| next - frames[i]);
+        let mut j = i;
+        while step > 0 && frames.get(j + 1) == Some(&(frames[j] + step)) {
+            j += 1;
+        }
+        runs.push(match (j - i, step) {
+            (0, _) => frames[i].to_string(),
+            (_, 1) => format!("{}-{}", frames[i], frames[j]),
+            (_, step) => format!("{}-{}:{step}", frames[i], frames[j]),
+        });
+        i = j + 1;
+    }
+    runs.join(",")
+}
+
+/// Commands that render no frames, so no farm task can run them.
+const NOT_FRAMES: [&str; 4] = ["farm", "info", "stitch", "demo"];
+
+/// `command` parsed as exrcomp parses it, its file names made absolute
+/// against `cwd` (a task runs in a session folder of the farm's), and run as
+/// a dry run over all `frames`, so that no template is written for a command
+/// that would fail on every task (a typo, a missing input, an output that is
+/// an input). The arguments every task runs, but for `--frames`: with
+/// `--resume` and `--quiet` once.
+pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Vec<String>> {
     if command
         .iter()
         .any(|a| a == "--frames" || a.starts_with("--frames="))
@@ -27,20 +61,72 @@ pub fn absolute_args(command: &[String], cwd: &Path) -> Result<Vec<String>> {
             "give --frames to `exrcomp farm`, not to the command: each task gets its chunk",
         ));
     }
-    Ok(command
-        .iter()
-        .map(|arg| {
-            let file = arg.to_ascii_lowercase();
-            let names_file = [".exr", ".toml"]
-                .iter()
-                .any(|e| file.ends_with(e) || file.contains(&format!("{e}:")));
-            if names_file && Path::new(arg).is_relative() {
-                cwd.join(arg).to_string_lossy().into_owned()
-            } else {
-                arg.clone()
+    let mut args = split_joined_values(command);
+    let argv = |args: &[String]| std::iter::once("exrcomp".to_string()).chain(args.to_vec());
+    let matches = Cli::command()
+        .try_get_matches_from(argv(&args))
+        .map_err(|e| {
+            let message = e.to_string();
+            let first = message.lines().next().unwrap_or_default();
+            Error::usage(format!(
+                "the command to run does not parse: {}",
+                first.trim_start_matches("error: ")
+            ))
+        })?;
+    let (name, sub) = matches.subcommand().expect("a subcommand is required");
+    if NOT_FRAMES.contains(&name) {
+        return Err(Error::usage(format!(
+            "`{name}` renders no frames: a farm job runs a command that writes frames (over, blur, run, transcode...)"
+        )));
+    }
+    // A subcommand's indices count from its own name, which is args[0].
+    let definition = Cli::command();
+    let definition = definition
+        .find_subcommand(name)
+        .expect("the parsed subcommand exists");
+    for arg in definition.get_arguments() {
+        if arg.get_value_hint() != ValueHint::FilePath {
+            continue;
+        }
+        for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
+            if Path::new(&args[at]).is_relative() {
+                args[at] = cwd.join(&args[at]).to_string_lossy().into_owned();
             }
-        })
-        .collect())
+        }
+    }
+    for flag in ["resume", "quiet"] {
+        if sub.try_get_one::<bool>(flag).ok().flatten() != Some(&true) {
+            args.push(format!("--{flag}"));
+        }
+    }
+    let check = argv(&args).chain(["--frames".into(), frames.into(), "--dry-run".into()]);
+    let cli = Cli::try_parse_from(check).map_err(|e| Error::usage(e.to_string()))?;
+    crate::commands::run(cli.command)?;
+    Ok(args)
+}
+
+/// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that
+/// every value is an argument of its own (clap's indices count them so).
+fn split_joined_values(command: &[String]) -> Vec<String> {
+    let mut args = Vec::new();
+    let mut options = true;
+    for arg in command {
+        match arg.as_str() {
+            "--" => {
+                options = false;
+                args.push(arg.clone());
+            }
+            a if options && a.starts_with("--") && a.contains('=') => {
+                let (name, value) = a.split_once('=').expect("has =");
+                args.extend([name.to_string(), value.to_string()]);
+            }
+            a if options && a.starts_with("-o") && a.len() > 2 => {
+                args.extend(["-o".to_string(), a[2..].to_string()]);
+            }
+            _ => args.push(arg.clone()),
+        }
+    }
+    args
 }
 
 /// JSON quoting is valid YAML quoting: every string goes out quoted.
@@ -48,45 +134,139 @@ fn quote(text: &str) -> String {
     serde_json::Value::String(text.to_string()).to_string()
 }
 
+/// How an OpenJD job splits its frames into tasks.
+pub enum Tasks {
+    /// One STRING task parameter listing the chunks (any OpenJD scheduler).
+    Listed(Vec<String>),
+    /// A CHUNK[INT] task parameter over all the frames (the TASK_CHUNKING
+    /// extension): the scheduler makes the chunks, adaptively towards a
+    /// runtime if one is given.
+    Chunked {
+        frames: String,
+        chunk: usize,
+        contiguous: bool,
+        target_seconds: Option<u32>,
+    },
+}
+
+impl Tasks {
+    pub fn new(
+        frames: &str,
+        chunk: usize,
+        chunking: bool,
+        target_seconds: Option<u32>,
+    ) -> Result<Self> {
+        if !chunking && target_seconds.is_none() {
+            let chunks = chunks(frames, chunk)?;
+            if chunks.len() > OPENJD_MAX_TASKS {
+                return Err(Error::usage(format!(
+                    "{} chunks: an OpenJD task parameter lists at most {OPENJD_MAX_TASKS}; \
+                     give a larger --chunk, or --task-chunking for the scheduler to chunk",
+                    chunks.len()
+                )));
+            }
+            return Ok(Tasks::Listed(chunks));
+        }
+        if chunk == 0 {
+            return Err(Error::usage("--chunk must be at least 1"));
+        }
+        let list = parse_frame_list(frames)?;
+        Ok(Tasks::Chunked {
+            contiguous: list.windows(2).all(|w| w[1] == w[0] + 1),
+            frames: range_expression(&list),
+            chunk,
+            target_seconds,
+        })
+    }
+}
+
 /// An Open Job Description job template (specification 2023-09): one step
-/// whose tasks are the frame chunks.
-pub fn openjd_template(exrcomp: &Path, command: &[String], chunks: &[String]) -> String {
+/// whose tasks are the frame chunks. An argument that holds `{{` goes
+/// through a STRING job parameter, whose value is not a format string.
+pub fn openjd_template(exrcomp: &Path, command: &[String], tasks: &Tasks) -> String {
     let name = format!("exrcomp {}", command.first().map_or("", String::as_str));
-    let list = |items: &[String]| {
-        items
-            .iter()
-            .map(|s| quote(s))
-            .collect::<Vec<_>>()
-            .join(", ")
+    let mut parameters = Vec::new();
+    let mut args = Vec::new();
+    for (i, arg) in command.iter().enumerate() {
+        if arg.contains("{{") {
+            let name = format!("Arg{i}");
+            args.push(quote(&format!("{{{{Param.{name}}}}}")));
+            parameters.push(format!(
+                "- name: {name}\n\x20 type: STRING\n\x20 default: {}\n",
+                quote(arg)
+            ));
+        } else {
+            args.push(quote(arg));
+        }
+    }
+    args.extend(["--frames", "{{Task.Param.Frames}}"].map(quote));
+    let (extensions, task_parameter) = match tasks {
+        Tasks::Listed(chunks) => (
+            String::new(),
+            format!(
+                "\x20     type: STRING\n\x20     range: [{}]\n",
+                chunks
+                    .iter()
+                    .map(|c| quote(c))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        ),
+        Tasks::Chunked {
+            frames,
+            chunk,
+            contiguous,
+            target_seconds,
+        } => (
+            "extensions: [TASK_CHUNKING]\n".to_string(),
+            format!(
+                "\x20     type: CHUNK[INT]\n\x20     range: {}\n\x20     chunks:\n\
+                 \x20       defaultTaskCount: {chunk}\n\x20       rangeConstraint: {}\n{}",
+                quote(frames),
+                if *contiguous {
+                    "CONTIGUOUS"
+                } else {
+                    "NONCONTIGUOUS"
+                },
+                target_seconds.map_or(String::new(), |t| {
+                    format!("\x20       targetRuntimeSeconds: {t}\n")
+                }),
+            ),
+        ),
     };
-    let mut args: Vec<String> = command.to_vec();
-    args.extend(["--frames", "{{Task.Param.Frames}}", "--resume", "--quiet"].map(String::from));
     format!(
         "specificationVersion: jobtemplate-2023-09\n\
+         {extensions}\
          name: {name}\n\
+         {parameters}\
          steps:\n\
          - name: exrcomp\n\
          \x20 parameterSpace:\n\
          \x20   taskParameterDefinitions:\n\
          \x20   - name: Frames\n\
-         \x20     type: STRING\n\
-         \x20     range: [{chunks}]\n\
+         {task_parameter}\
          \x20 script:\n\
          \x20   actions:\n\
          \x20     onRun:\n\
          \x20       command: {command}\n\
          \x20       args: [{args}]\n",
         name = quote(&name),
-        chunks = list(chunks),
+        parameters = match parameters.is_empty() {
+            true => String::new(),
+            false => format!("parameterDefinitions:\n{}", parameters.concat()),
+        },
         command = quote(&exrcomp.to_string_lossy()),
-        args = list(&args),
+        args = args.join(", "),
     )
 }
 
 /// Writes `text` to `path` under a temporary name, renamed when complete.
 pub fn write_template(path: &Path, text: &str) -> Result<()> {
     let temporary = crate::io::writer::temporary_path(path);
-    std::fs::write(&temporary, text)
+    let folder = path.parent().filter(|d| !d.as_os_str().is_empty());
+    folder
+        .map_or(Ok(()), std::fs::create_dir_all)
+        .and_then(|()| std::fs::write(&temporary, text))
         .and_then(|()| std::fs::rename(&temporary, path))
         .map_err(|e| {
             let _ = std::fs::remove_file(&temporary);
@@ -107,31 +287,22 @@ pub fn opencue_outline(
     if chunk == 0 {
         return Err(Error::usage("--chunk must be at least 1"));
     }
-    let (range, step) = match frames.split_once(':') {
-        Some((range, step)) => (range, Some(step)),
-        None => (frames, None),
-    };
-    let contiguous = range
-        .split_once('-')
-        .is_some_and(|(a, b)| a.parse::<i64>().is_ok() && b.parse::<i64>().is_ok());
-    if !contiguous || range.contains(',') {
-        return Err(Error::usage("OpenCue takes frame ranges A-B or A-B:STEP"));
-    }
-    let (cue_range, chunk_frames) = match step {
-        Some(step) => (
+    let range = range_expression(&parse_frame_list(frames)?);
+    let (cue_range, chunk_frames) = match range.split_once(':') {
+        _ if range.contains(',') || !range[1..].contains('-') => {
+            return Err(Error::usage(
+                "OpenCue takes one frame range, A-B or A-BxSTEP",
+            ))
+        }
+        Some((range, step)) => (
             format!("{range}x{step}"),
             format!("#FRAME_START#-#FRAME_END#:{step}"),
         ),
-        None => (range.to_string(), "#FRAME_START#-#FRAME_END#".to_string()),
+        None => (range.clone(), "#FRAME_START#-#FRAME_END#".to_string()),
     };
     let mut args = vec![exrcomp.to_string_lossy().into_owned()];
     args.extend(command.iter().cloned());
-    args.extend([
-        "--frames".to_string(),
-        chunk_frames,
-        "--resume".into(),
-        "--quiet".into(),
-    ]);
+    args.extend(["--frames".to_string(), chunk_frames]);
     let name = format!("exrcomp-{}", command.first().map_or("job", String::as_str));
     let outline = serde_json::json!({
         "name": name,
