@@ -162,3 +162,40 @@ fn a_chunk_claiming_more_bytes_than_the_file_holds_is_refused_before_reading() {
         stderr(&out)
     );
 }
+
+#[test]
+fn a_result_too_wide_to_hold_a_strip_of_is_refused_before_allocating() {
+    // Two small, valid images 200 million pixels apart: their union is
+    // too wide for one block of rows to fit in memory.
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.exr"), dir.path().join("b.exr"));
+    let near = random_rgba(1, 0, 0, 4, 4, Kind::Half, false);
+    let far = random_rgba(2, 200_000_000, 0, 4, 4, Kind::Half, false);
+    write_image(
+        &a,
+        &near,
+        compression("zip"),
+        exr::prelude::LineOrder::Increasing,
+    );
+    write_image(
+        &b,
+        &far,
+        compression("zip"),
+        exr::prelude::LineOrder::Increasing,
+    );
+    let out_path = dir.path().join("out");
+    std::fs::create_dir(&out_path).unwrap();
+    let out = limited(&["over", s(&a), s(&b), "-o", s(&out_path.join("o.exr")), "-q"]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("a.exr") && message.contains("over the"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&out_path).unwrap().count(),
+        0,
+        "nothing left"
+    );
+}

@@ -19,6 +19,13 @@ use std::sync::Arc;
 /// small enough that the strips in flight stay a few megabytes.
 const STRIP_BYTES: usize = 1 << 20;
 
+/// Most bytes one strip may take, every node's rows together: a few strips
+/// are in flight at once (decoded, composed, encoded), so this keeps a frame
+/// within a gigabyte or so. One block of rows over it is refused: only a
+/// data window millions of pixels wide (a damaged header, or inputs far
+/// apart) comes near it; real frames take a few megabytes per block.
+pub const MAX_STRIP_BYTES: usize = 256 << 20;
+
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
     pub inputs: Vec<FramePattern>,
@@ -231,10 +238,38 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
     };
+    // Every node holds the strip's rows across the whole result's width.
+    let row_bytes = channels
+        .iter()
+        .flatten()
+        .map(|c| c.sample_type.bytes_per_sample())
+        .sum::<usize>()
+        .saturating_mul(computed.size.width());
+    let strip_block_bytes = row_bytes.saturating_mul(lines);
+    if strip_block_bytes > MAX_STRIP_BYTES {
+        let message = format!(
+            "the result would be {} x {} pixels: one strip of {lines} rows would take \
+             {strip_block_bytes} bytes, over the {MAX_STRIP_BYTES}-byte limit \
+             (is the data window damaged?)",
+            window.size.width(),
+            window.size.height(),
+        );
+        // Blame the widest input (the first of the widest): its data window
+        // makes the result that wide, or inputs far apart do.
+        let widest = (0..inputs.len())
+            .rev()
+            .max_by_key(|&i| input_window(i).size.width());
+        return Err(match widest {
+            Some(i) => inputs[i].error(message),
+            None => Error::usage(message),
+        });
+    }
     let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
     let blocks = STRIP_BYTES
         .div_ceil(block_bytes.max(1))
-        .max(rayon::current_num_threads());
+        .max(rayon::current_num_threads())
+        .min(MAX_STRIP_BYTES / strip_block_bytes.max(1))
+        .max(1);
     Ok(FramePlan {
         frame,
         label,

@@ -7,8 +7,10 @@ use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
 use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, WritableImage};
 use half::f16;
 use std::collections::BTreeMap;
+use std::io::{Read, Seek};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
 pub fn exrcomp() -> Command {
     Command::new(env!("CARGO_BIN_EXE_exrcomp"))
@@ -41,13 +43,60 @@ pub fn generate(path: &Path, kind: &str, (width, height): (usize, usize), args: 
 /// Runs exrcomp under a 4 GiB address-space limit (an allocation sized from
 /// a damaged header would abort the process instead of passing quietly).
 pub fn limited(args: &[&str]) -> Output {
-    Command::new("sh")
+    limited_command(args).output().expect("sh runs")
+}
+
+fn limited_command(args: &[&str]) -> Command {
+    let mut command = Command::new("sh");
+    command
         .arg("-c")
         .arg("ulimit -v 4194304; exec \"$0\" \"$@\"")
         .arg(env!("CARGO_BIN_EXE_exrcomp"))
-        .args(args)
-        .output()
-        .expect("sh runs")
+        .args(args);
+    command
+}
+
+/// How a `limited_within` run ended.
+pub struct Ended {
+    /// The exit code; `None` when a signal ended it or it was killed.
+    pub code: Option<i32>,
+    /// The signal that ended it (SIGABRT for a failed allocation).
+    pub signal: Option<i32>,
+    /// Killed for running past its time.
+    pub timed_out: bool,
+    pub stderr: String,
+}
+
+/// `limited`, killed after `timeout`. Standard error goes to a file, so that
+/// a long message (a backtrace) cannot block the child on a full pipe.
+pub fn limited_within(args: &[&str], timeout: Duration) -> Ended {
+    let mut log = tempfile::tempfile().expect("temporary file");
+    let mut child = limited_command(args)
+        .stdout(Stdio::null())
+        .stderr(log.try_clone().expect("file handle"))
+        .spawn()
+        .expect("sh runs");
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("child waited for") {
+            break Some(status);
+        }
+        if started.elapsed() > timeout {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let mut stderr = String::new();
+    log.rewind().expect("rewind");
+    let _ = log.read_to_string(&mut stderr);
+    Ended {
+        code: status.and_then(|s| s.code()),
+        signal: status.and_then(|s| std::os::unix::process::ExitStatusExt::signal(&s)),
+        timed_out: status.is_none(),
+        stderr,
+    }
 }
 
 pub fn stderr(out: &Output) -> String {
