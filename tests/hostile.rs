@@ -134,14 +134,39 @@ fn changed_header_and_offset_table_bytes_never_crash() {
 
 #[test]
 fn fuzzer_findings_stay_fixed() {
-    // Inputs the fuzzer (fuzz/) once broke exrcomp with, kept as regressions.
+    // Inputs that once broke exrcomp (fuzz/README.md), kept as regressions:
+    // read (`info`), and run through the engine by every kind of command.
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz-regressions");
-    let Ok(entries) = std::fs::read_dir(&folder) else {
-        return;
-    };
-    for entry in entries {
-        check(&entry.unwrap().path(), false);
+    let mut files: Vec<_> = std::fs::read_dir(&folder)
+        .unwrap_or_else(|e| panic!("{}: {e}", folder.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_none_or(|e| e != "md"))
+        .collect();
+    files.sort();
+    assert!(
+        !files.is_empty(),
+        "no regression inputs in {}",
+        folder.display()
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.exr");
+    generate(&good, "bg", (64, 64), &[]);
+    let oiiotool = peer("oiiotool");
+    let mut wrong = Vec::new();
+    for file in &files {
+        check(file, false);
+        for (command, args) in hostile_commands() {
+            let work = dir.path().join("work");
+            std::fs::create_dir(&work).unwrap();
+            let out = work.join("out.exr");
+            let args = args(s(file), s(&good), s(&out));
+            if let (_, Some(w)) = hostile_run(file, &args, &work, &out, oiiotool.as_deref()) {
+                wrong.push(format!("{}, {command}: {w}", file.display()));
+            }
+            std::fs::remove_dir_all(&work).unwrap();
+        }
     }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
 
 #[test]

@@ -656,3 +656,92 @@ pub fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
         String::from_utf8_lossy(&out.stdout)
     );
 }
+
+/// Far above any hostile run's time (well under a second each in a debug build).
+const HOSTILE_TIMEOUT: Duration = Duration::from_secs(60);
+
+/// The commands a damaged file goes through (tests/damaged_corpus.rs,
+/// tests/hostile.rs), by name: their arguments for the damaged file, a good
+/// plate and the output path.
+pub fn hostile_commands() -> Vec<(&'static str, fn(&str, &str, &str) -> Vec<String>)> {
+    fn v(args: &[&str]) -> Vec<String> {
+        args.iter().map(|a| a.to_string()).collect()
+    }
+    vec![
+        ("over (damaged fg)", |d, good, out| {
+            v(&["over", d, good, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("over (damaged bg)", |d, good, out| {
+            v(&["over", good, d, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("transcode", |d, _, out| {
+            v(&["transcode", d, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("blur", |d, _, out| {
+            v(&["blur", "--radius", "3", d, "-o", out, "-q"])
+        }),
+        ("flatten", |d, _, out| v(&["flatten", d, "-o", out, "-q"])),
+        ("info", |d, _, _| v(&["info", d])),
+    ]
+}
+
+/// Whether OpenEXR (oiiotool) decodes every pixel of `path`; without
+/// oiiotool, exrcomp's own check.
+fn decodes(path: &Path, oiiotool: Option<&Path>) -> Result<(), String> {
+    let out = match oiiotool {
+        Some(tool) => Command::new(tool).arg("--stats").arg(path).output(),
+        None => exrcomp().arg("info").arg(path).output(),
+    }
+    .expect("the checker runs");
+    let text = String::from_utf8_lossy(&out.stdout).to_string() + &stderr(&out);
+    if out.status.success() && !text.to_lowercase().contains("error") {
+        Ok(())
+    } else {
+        Err(text)
+    }
+}
+
+/// Runs `args` (one of `hostile_commands`) on `damaged`, writing `out` in
+/// the empty folder `work`: its exit code and what is wrong, if anything
+/// (anything but a decodable output or a one-line error naming the file,
+/// with nothing else left in `work`).
+pub fn hostile_run(
+    damaged: &Path,
+    args: &[String],
+    work: &Path,
+    out: &Path,
+    oiiotool: Option<&Path>,
+) -> (Option<i32>, Option<String>) {
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let ended = limited_within(&args, HOSTILE_TIMEOUT);
+    let name = damaged.file_name().unwrap().to_str().unwrap();
+    let message = ended.stderr.trim_end();
+    let mut left: Vec<String> = std::fs::read_dir(work)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    let wrong = match ended.code {
+        _ if ended.timed_out => Some(format!("still running after {HOSTILE_TIMEOUT:?}")),
+        Some(0) if left != ["out.exr"] && args[0] != "info" => {
+            Some(format!("exit 0, output folder holds {left:?}"))
+        }
+        Some(0) => match args[0] {
+            "info" => None,
+            _ => decodes(out, oiiotool)
+                .err()
+                .map(|e| format!("exit 0 but the output does not decode: {e}")),
+        },
+        Some(3) if !left.is_empty() => Some(format!("exit 3, left {left:?}")),
+        Some(3) if message.lines().count() != 1 || !message.contains(name) => Some(format!(
+            "exit 3 without a one-line message naming the file: {message}"
+        )),
+        Some(3) => None,
+        code => Some(format!(
+            "exit {code:?} (signal {:?}), left {left:?}: {}",
+            ended.signal,
+            message.lines().next().unwrap_or("")
+        )),
+    };
+    (ended.code, wrong)
+}
