@@ -224,3 +224,119 @@ fn a_result_too_wide_to_hold_a_strip_of_is_refused_before_allocating() {
         "nothing left"
     );
 }
+
+/// EXR's ZIP predictor and byte split (the inverse of what readers undo),
+/// then zlib.
+fn zip_pack(raw: &[u8]) -> Vec<u8> {
+    let mut split: Vec<u8> = Vec::with_capacity(raw.len());
+    split.extend(raw.iter().step_by(2));
+    split.extend(raw.iter().skip(1).step_by(2));
+    let mut previous = 0u8;
+    let predicted: Vec<u8> = split
+        .iter()
+        .enumerate()
+        .map(|(i, &b)| {
+            let d = if i == 0 {
+                b
+            } else {
+                b.wrapping_sub(previous).wrapping_add(128)
+            };
+            previous = b;
+            d
+        })
+        .collect();
+    let mut compressor = libdeflater::Compressor::new(libdeflater::CompressionLvl::best());
+    let mut out = vec![0; compressor.zlib_compress_bound(predicted.len())];
+    let len = compressor.zlib_compress(&predicted, &mut out).unwrap();
+    out.truncate(len);
+    out
+}
+
+/// A one-line deep ZIPS file `width` pixels wide (channels A half, Z float)
+/// whose last pixel holds `samples` samples, all zero: a few hundred
+/// kilobytes of zlib for hundreds of megabytes of samples.
+fn crowded_deep_file(width: usize, samples: usize) -> Vec<u8> {
+    fn attribute(out: &mut Vec<u8>, name: &str, kind: &str, value: &[u8]) {
+        for text in [name, kind] {
+            out.extend(text.as_bytes());
+            out.push(0);
+        }
+        out.extend((value.len() as i32).to_le_bytes());
+        out.extend(value);
+    }
+    let mut channels = Vec::new();
+    for (name, kind) in [("A", 1i32), ("Z", 2)] {
+        channels.extend(name.as_bytes());
+        channels.push(0);
+        channels.extend(kind.to_le_bytes());
+        channels.extend([0, 0, 0, 0]);
+        channels.extend(1i32.to_le_bytes());
+        channels.extend(1i32.to_le_bytes());
+    }
+    channels.push(0);
+    let window: Vec<u8> = [0, 0, width as i32 - 1, 0]
+        .iter()
+        .flat_map(|v: &i32| v.to_le_bytes())
+        .collect();
+    let mut file = vec![0x76, 0x2f, 0x31, 0x01];
+    file.extend((2u32 | 0x800).to_le_bytes());
+    attribute(&mut file, "channels", "chlist", &channels);
+    attribute(&mut file, "chunkCount", "int", &1i32.to_le_bytes());
+    attribute(&mut file, "compression", "compression", &[2]);
+    attribute(&mut file, "dataWindow", "box2i", &window);
+    attribute(&mut file, "displayWindow", "box2i", &window);
+    attribute(&mut file, "lineOrder", "lineOrder", &[0]);
+    attribute(&mut file, "pixelAspectRatio", "float", &1f32.to_le_bytes());
+    attribute(&mut file, "screenWindowCenter", "v2f", &[0; 8]);
+    attribute(&mut file, "screenWindowWidth", "float", &1f32.to_le_bytes());
+    attribute(&mut file, "type", "string", b"deepscanline");
+    attribute(&mut file, "version", "int", &1i32.to_le_bytes());
+    file.push(0);
+    let mut counts = vec![0u8; 4 * width];
+    counts[4 * (width - 1)..].copy_from_slice(&(samples as i32).to_le_bytes());
+    let table = zip_pack(&counts);
+    let data = zip_pack(&vec![0; samples * 6]);
+    file.extend((file.len() as u64 + 8).to_le_bytes());
+    file.extend(0i32.to_le_bytes());
+    for size in [table.len(), data.len(), samples * 6] {
+        file.extend((size as u64).to_le_bytes());
+    }
+    file.extend(table);
+    file.extend(data);
+    file
+}
+
+#[test]
+fn a_deep_pixel_of_millions_of_samples_is_refused_before_flattening() {
+    // 350 KB unpacking to 360 MB of samples in one pixel: decoded to f32 and
+    // sorted, it took over 4 GiB.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("crowded.exr");
+    std::fs::write(&path, crowded_deep_file(65536, 60_000_000)).unwrap();
+    // The file itself is well-formed: `info` accepts it.
+    let out = limited(&["info", s(&path)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let folder = dir.path().join("out");
+    std::fs::create_dir(&folder).unwrap();
+    let out = limited(&[
+        "flatten",
+        s(&path),
+        "-o",
+        s(&folder.join("flat.exr")),
+        "-q",
+        "--threads",
+        "8",
+    ]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("crowded.exr") && message.contains("deep chunk 0"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&folder).unwrap().count(),
+        0,
+        "nothing left"
+    );
+}
