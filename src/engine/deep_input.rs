@@ -34,6 +34,9 @@ pub fn flat_channels(file: &ExrFile, part: usize) -> Vec<ChannelDescription> {
 /// several times more.
 const MAX_DEEP_CHUNK_BYTES: usize = MAX_BLOCK_BYTES;
 
+/// Per file, chunks read (still compressed) with their indices, in order.
+type ChunksRead = Vec<Vec<(usize, DeepChunk)>>;
+
 /// One sample of a pixel being flattened: depth, alpha, file, block, index.
 type SortEntry = (f32, f32, usize, usize, usize);
 
@@ -128,7 +131,7 @@ impl DeepInput {
     /// The rows from `top` on (before `bottom`) whose chunks, decoded, take
     /// at most `MAX_STRIP_BYTES` together, at least row `top`'s; and per
     /// file, those chunks read (still compressed), in order.
-    fn batch(&self, top: i32, bottom: i32) -> Result<(i32, Vec<Vec<(usize, DeepChunk)>>)> {
+    fn batch(&self, top: i32, bottom: i32) -> Result<(i32, ChunksRead)> {
         let mut chunks: Vec<Vec<(usize, DeepChunk)>> =
             self.files.iter().map(|_| Vec::new()).collect();
         let mut cost = 0;

@@ -660,10 +660,13 @@ pub fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
 /// Far above any hostile run's time (well under a second each in a debug build).
 const HOSTILE_TIMEOUT: Duration = Duration::from_secs(60);
 
+/// Arguments from a damaged file, a good plate and an output path.
+pub type HostileArgs = fn(&str, &str, &str) -> Vec<String>;
+
 /// The commands a damaged file goes through (tests/damaged_corpus.rs,
 /// tests/hostile.rs), by name: their arguments for the damaged file, a good
 /// plate and the output path.
-pub fn hostile_commands() -> Vec<(&'static str, fn(&str, &str, &str) -> Vec<String>)> {
+pub fn hostile_commands() -> Vec<(&'static str, HostileArgs)> {
     fn v(args: &[&str]) -> Vec<String> {
         args.iter().map(|a| a.to_string()).collect()
     }
