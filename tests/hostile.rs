@@ -252,58 +252,80 @@ fn zip_pack(raw: &[u8]) -> Vec<u8> {
     out
 }
 
+/// An EXR file from its attributes (name, type, value; sorted, as
+/// written) and its chunks (each with its header), one part.
+fn exr_file(deep: bool, attributes: &[(&str, &str, Vec<u8>)], chunks: &[Vec<u8>]) -> Vec<u8> {
+    let mut file = vec![0x76, 0x2f, 0x31, 0x01];
+    file.extend((2u32 | if deep { 0x800 } else { 0 }).to_le_bytes());
+    for (name, kind, value) in attributes {
+        for text in [name, kind] {
+            file.extend(text.as_bytes());
+            file.push(0);
+        }
+        file.extend((value.len() as i32).to_le_bytes());
+        file.extend(value);
+    }
+    file.push(0);
+    let mut offset = (file.len() + 8 * chunks.len()) as u64;
+    for chunk in chunks {
+        file.extend(offset.to_le_bytes());
+        offset += chunk.len() as u64;
+    }
+    chunks.iter().for_each(|c| file.extend(c));
+    file
+}
+
+/// The attributes of a scanline file with `channels` (name, pixel type:
+/// 1 half, 2 float) and data window (x0, y0, x1, y1), ZIPS.
+fn zips_attributes(
+    channels: &[(&str, i32)],
+    window: [i32; 4],
+    deep: bool,
+) -> Vec<(&'static str, &'static str, Vec<u8>)> {
+    let mut list = Vec::new();
+    for (name, kind) in channels {
+        list.extend(name.as_bytes());
+        list.push(0);
+        list.extend(kind.to_le_bytes());
+        list.extend([0, 0, 0, 0]);
+        list.extend(1i32.to_le_bytes());
+        list.extend(1i32.to_le_bytes());
+    }
+    list.push(0);
+    let window: Vec<u8> = window.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let mut attributes = vec![
+        ("channels", "chlist", list),
+        ("compression", "compression", vec![2]),
+        ("dataWindow", "box2i", window.clone()),
+        ("displayWindow", "box2i", window),
+        ("lineOrder", "lineOrder", vec![0]),
+        ("pixelAspectRatio", "float", 1f32.to_le_bytes().to_vec()),
+        ("screenWindowCenter", "v2f", vec![0; 8]),
+        ("screenWindowWidth", "float", 1f32.to_le_bytes().to_vec()),
+    ];
+    if deep {
+        attributes.push(("type", "string", b"deepscanline".to_vec()));
+        attributes.push(("version", "int", 1i32.to_le_bytes().to_vec()));
+    }
+    attributes
+}
+
 /// A one-line deep ZIPS file `width` pixels wide (channels A half, Z float)
 /// whose last pixel holds `samples` samples, all zero: a few hundred
 /// kilobytes of zlib for hundreds of megabytes of samples.
 fn crowded_deep_file(width: usize, samples: usize) -> Vec<u8> {
-    fn attribute(out: &mut Vec<u8>, name: &str, kind: &str, value: &[u8]) {
-        for text in [name, kind] {
-            out.extend(text.as_bytes());
-            out.push(0);
-        }
-        out.extend((value.len() as i32).to_le_bytes());
-        out.extend(value);
-    }
-    let mut channels = Vec::new();
-    for (name, kind) in [("A", 1i32), ("Z", 2)] {
-        channels.extend(name.as_bytes());
-        channels.push(0);
-        channels.extend(kind.to_le_bytes());
-        channels.extend([0, 0, 0, 0]);
-        channels.extend(1i32.to_le_bytes());
-        channels.extend(1i32.to_le_bytes());
-    }
-    channels.push(0);
-    let window: Vec<u8> = [0, 0, width as i32 - 1, 0]
-        .iter()
-        .flat_map(|v: &i32| v.to_le_bytes())
-        .collect();
-    let mut file = vec![0x76, 0x2f, 0x31, 0x01];
-    file.extend((2u32 | 0x800).to_le_bytes());
-    attribute(&mut file, "channels", "chlist", &channels);
-    attribute(&mut file, "chunkCount", "int", &1i32.to_le_bytes());
-    attribute(&mut file, "compression", "compression", &[2]);
-    attribute(&mut file, "dataWindow", "box2i", &window);
-    attribute(&mut file, "displayWindow", "box2i", &window);
-    attribute(&mut file, "lineOrder", "lineOrder", &[0]);
-    attribute(&mut file, "pixelAspectRatio", "float", &1f32.to_le_bytes());
-    attribute(&mut file, "screenWindowCenter", "v2f", &[0; 8]);
-    attribute(&mut file, "screenWindowWidth", "float", &1f32.to_le_bytes());
-    attribute(&mut file, "type", "string", b"deepscanline");
-    attribute(&mut file, "version", "int", &1i32.to_le_bytes());
-    file.push(0);
+    let attributes = zips_attributes(&[("A", 1), ("Z", 2)], [0, 0, width as i32 - 1, 0], true);
     let mut counts = vec![0u8; 4 * width];
     counts[4 * (width - 1)..].copy_from_slice(&(samples as i32).to_le_bytes());
     let table = zip_pack(&counts);
     let data = zip_pack(&vec![0; samples * 6]);
-    file.extend((file.len() as u64 + 8).to_le_bytes());
-    file.extend(0i32.to_le_bytes());
+    let mut chunk = 0i32.to_le_bytes().to_vec();
     for size in [table.len(), data.len(), samples * 6] {
-        file.extend((size as u64).to_le_bytes());
+        chunk.extend((size as u64).to_le_bytes());
     }
-    file.extend(table);
-    file.extend(data);
-    file
+    chunk.extend(table);
+    chunk.extend(data);
+    exr_file(true, &attributes, &[chunk])
 }
 
 #[test]
@@ -331,6 +353,59 @@ fn a_deep_pixel_of_millions_of_samples_is_refused_before_flattening() {
     assert_eq!(out.status.code(), Some(3), "{message}");
     assert!(
         message.contains("crowded.exr") && message.contains("deep chunk 0"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&folder).unwrap().count(),
+        0,
+        "nothing left"
+    );
+}
+
+#[test]
+fn an_input_far_wider_than_the_result_is_refused_before_decoding() {
+    // 4 MB of ZIPS, 8 million transparent pixels wide, 64 rows, to the left
+    // of a 64x64 plate: `stencil` keeps the plate's window, and a strip of
+    // the input's chunks, decoded across its own width, took over 4 GiB.
+    let dir = tempfile::tempdir().unwrap();
+    let (wide, plate) = (dir.path().join("wide.exr"), dir.path().join("plate.exr"));
+    let width = 8_000_000;
+    let window = [32 - width as i32, 0, 31, 63];
+    let channels = [("A", 1), ("B", 1), ("G", 1), ("R", 1)];
+    let data = zip_pack(&vec![0; width * 8]);
+    let chunks: Vec<Vec<u8>> = (0..64i32)
+        .map(|y| {
+            let mut chunk = y.to_le_bytes().to_vec();
+            chunk.extend((data.len() as i32).to_le_bytes());
+            chunk.extend(&data);
+            chunk
+        })
+        .collect();
+    std::fs::write(
+        &wide,
+        exr_file(false, &zips_attributes(&channels, window, false), &chunks),
+    )
+    .unwrap();
+    generate(&plate, "bg", (64, 64), &[]);
+    let folder = dir.path().join("out");
+    std::fs::create_dir(&folder).unwrap();
+    let out = limited(&[
+        "merge",
+        "--op",
+        "stencil",
+        s(&wide),
+        s(&plate),
+        "-o",
+        s(&folder.join("o.exr")),
+        "-q",
+        "--threads",
+        "8",
+    ]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("wide.exr") && message.contains("over the"),
         "{message}"
     );
     assert_eq!(message.lines().count(), 1, "{message}");

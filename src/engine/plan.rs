@@ -238,24 +238,41 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
     };
-    // Every node holds the strip's rows across the whole result's width.
+    // Every node holds the strip's rows across the whole result's width; a
+    // flat input's chunks are decoded across its own width (wider than the
+    // result's when it is clipped), whole blocks covering the strip's rows.
+    // (A deep input's chunks are decoded in batches of their own size.)
     let row_bytes = channels
         .iter()
         .flatten()
         .map(|c| c.sample_type.bytes_per_sample())
         .sum::<usize>()
         .saturating_mul(computed.size.width());
-    let strip_block_bytes = row_bytes.saturating_mul(lines);
-    if strip_block_bytes > MAX_STRIP_BYTES {
+    let decoded: Vec<(usize, usize)> = (0..inputs.len())
+        .filter(|&i| deep[i].is_none())
+        .map(|i| {
+            let header = header_of(i);
+            let row = header.channels.bytes_per_pixel * input_window(i).size.width();
+            (row, header.compression.scan_lines_per_block())
+        })
+        .collect();
+    let strip_bytes = |rows: usize| {
+        decoded
+            .iter()
+            .map(|&(row, lines)| row.saturating_mul(rows + lines))
+            .fold(row_bytes.saturating_mul(rows), usize::saturating_add)
+    };
+    let smallest = strip_bytes(lines);
+    if smallest > MAX_STRIP_BYTES {
         let message = format!(
-            "the result would be {} x {} pixels: one strip of {lines} rows would take \
-             {strip_block_bytes} bytes, over the {MAX_STRIP_BYTES}-byte limit \
-             (is the data window damaged?)",
+            "the result would be {} x {} pixels: one strip of {lines} rows, decoded and \
+             composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
+             (is a data window damaged?)",
             window.size.width(),
             window.size.height(),
         );
         // Blame the widest input (the first of the widest): its data window
-        // makes the result that wide, or inputs far apart do.
+        // makes the strips that wide, or inputs far apart do.
         let widest = (0..inputs.len())
             .rev()
             .max_by_key(|&i| input_window(i).size.width());
@@ -265,11 +282,12 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         });
     }
     let block_bytes = window.size.width() * lines * header.channels.bytes_per_pixel;
-    let blocks = STRIP_BYTES
+    let mut blocks = STRIP_BYTES
         .div_ceil(block_bytes.max(1))
-        .max(rayon::current_num_threads())
-        .min(MAX_STRIP_BYTES / strip_block_bytes.max(1))
-        .max(1);
+        .max(rayon::current_num_threads());
+    while blocks > 1 && strip_bytes(blocks * lines) > MAX_STRIP_BYTES {
+        blocks = (blocks / 2).max(1);
+    }
     Ok(FramePlan {
         frame,
         label,
