@@ -265,7 +265,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let smallest = strip_bytes(lines);
     if smallest > MAX_STRIP_BYTES {
         let message = format!(
-            "the result would be {} x {} pixels: one strip of {lines} rows, decoded and \
+            "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
              composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
              (is a data window damaged?)",
             window.size.width(),
