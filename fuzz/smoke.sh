@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# CI smoke test: fuzzes read_exr for ~20 s (FUZZ_SECONDS to change).
-# Exits 0 with a message when cargo-fuzz or a toolchain able to build the target
+# CI smoke test: fuzzes each target (read_exr, then run_job) for ~25 s
+# (FUZZ_SECONDS to change), about a minute in all.
+# Exits 0 with a message when cargo-fuzz or a toolchain able to build the targets
 # is missing; non-zero only when the fuzzer itself finds a crash, timeout or OOM.
 set -uo pipefail
 cd "$(dirname "$0")"
-seconds="${FUZZ_SECONDS:-20}"
+seconds="${FUZZ_SECONDS:-25}"
 # cargo-fuzz passes nightly-only flags (-Zsanitizer=address); this lets stable accept them.
 export RUSTC_BOOTSTRAP=1
 
@@ -17,8 +18,9 @@ if ! cargo fuzz --version >/dev/null 2>&1; then
     fi
 fi
 
-if ! cargo fuzz build read_exr; then
-    echo "fuzz smoke: SKIPPED (this toolchain cannot build the fuzz target)"
+# Both targets in one build.
+if ! cargo fuzz build; then
+    echo "fuzz smoke: SKIPPED (this toolchain cannot build the fuzz targets)"
     exit 0
 fi
 
@@ -28,10 +30,19 @@ trap 'rm -rf "$corpus"' EXIT
 ./seed.sh "$corpus" || echo "fuzz smoke: no seed images, starting from an empty corpus"
 # Small seeds only, so that loading them takes seconds and leaves time to mutate.
 find "$corpus" -type f -size +256k -delete
-if cargo fuzz run read_exr "$corpus" -- -max_total_time="$seconds" \
-        -rss_limit_mb=2048 -timeout=10 -max_len=4000000; then
-    echo "fuzz smoke: OK (${seconds} s, no crash)"
-else
-    echo "fuzz smoke: FAILED: reproducer in fuzz/artifacts/read_exr/" >&2
-    exit 1
-fi
+
+failed=0
+for target in read_exr run_job; do
+    # Each target grows its own copy of the seeds.
+    work="$corpus/$target"
+    mkdir "$work"
+    find "$corpus" -maxdepth 1 -type f -exec cp {} "$work" \;
+    if cargo fuzz run "$target" "$work" -- -max_total_time="$seconds" \
+            -rss_limit_mb=2048 -timeout=10 -max_len=300000; then
+        echo "fuzz smoke: $target OK (${seconds} s, no crash)"
+    else
+        echo "fuzz smoke: $target FAILED: reproducer in fuzz/artifacts/$target/" >&2
+        failed=1
+    fi
+done
+exit "$failed"

@@ -138,14 +138,39 @@ fn changed_header_and_offset_table_bytes_never_crash() {
 
 #[test]
 fn fuzzer_findings_stay_fixed() {
-    // Inputs the fuzzer (fuzz/) once broke exrcomp with, kept as regressions.
+    // Inputs that once broke exrcomp (fuzz/README.md), kept as regressions:
+    // read (`info`), and run through the engine by every kind of command.
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz-regressions");
-    let Ok(entries) = std::fs::read_dir(&folder) else {
-        return;
-    };
-    for entry in entries {
-        check(&entry.unwrap().path(), false);
+    let mut files: Vec<_> = std::fs::read_dir(&folder)
+        .unwrap_or_else(|e| panic!("{}: {e}", folder.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_none_or(|e| e != "md"))
+        .collect();
+    files.sort();
+    assert!(
+        !files.is_empty(),
+        "no regression inputs in {}",
+        folder.display()
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.exr");
+    generate(&good, "bg", (64, 64), &[]);
+    let oiiotool = peer("oiiotool");
+    let mut wrong = Vec::new();
+    for file in &files {
+        check(file, false);
+        for (command, args) in hostile_commands() {
+            let work = dir.path().join("work");
+            std::fs::create_dir(&work).unwrap();
+            let out = work.join("out.exr");
+            let args = args(s(file), s(&good), s(&out));
+            if let (_, Some(w)) = hostile_run(file, &args, &work, &out, oiiotool.as_deref()) {
+                wrong.push(format!("{}, {command}: {w}", file.display()));
+            }
+            std::fs::remove_dir_all(&work).unwrap();
+        }
     }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
 
 #[test]
@@ -283,4 +308,232 @@ fn inputs_so_far_apart_that_the_result_could_not_be_read_back_are_refused() {
         "{message}"
     );
     assert!(!out.exists());
+}
+
+#[test]
+fn a_result_too_wide_to_hold_a_strip_of_is_refused_before_allocating() {
+    // Two small, valid images 200 million pixels apart: their union is
+    // too wide for one block of rows to fit in memory.
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.exr"), dir.path().join("b.exr"));
+    let near = random_rgba(1, 0, 0, 4, 4, Kind::Half, false);
+    let far = random_rgba(2, 200_000_000, 0, 4, 4, Kind::Half, false);
+    write_image(
+        &a,
+        &near,
+        compression("zip"),
+        exr::prelude::LineOrder::Increasing,
+    );
+    write_image(
+        &b,
+        &far,
+        compression("zip"),
+        exr::prelude::LineOrder::Increasing,
+    );
+    let out_path = dir.path().join("out");
+    std::fs::create_dir(&out_path).unwrap();
+    let out = limited(&["over", s(&a), s(&b), "-o", s(&out_path.join("o.exr")), "-q"]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("a.exr") && message.contains("over the"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&out_path).unwrap().count(),
+        0,
+        "nothing left"
+    );
+}
+
+/// EXR's ZIP predictor and byte split (the inverse of what readers undo),
+/// then zlib.
+fn zip_pack(raw: &[u8]) -> Vec<u8> {
+    let mut split: Vec<u8> = Vec::with_capacity(raw.len());
+    split.extend(raw.iter().step_by(2));
+    split.extend(raw.iter().skip(1).step_by(2));
+    let mut previous = 0u8;
+    let predicted: Vec<u8> = split
+        .iter()
+        .enumerate()
+        .map(|(i, &b)| {
+            let d = if i == 0 {
+                b
+            } else {
+                b.wrapping_sub(previous).wrapping_add(128)
+            };
+            previous = b;
+            d
+        })
+        .collect();
+    let mut compressor = libdeflater::Compressor::new(libdeflater::CompressionLvl::best());
+    let mut out = vec![0; compressor.zlib_compress_bound(predicted.len())];
+    let len = compressor.zlib_compress(&predicted, &mut out).unwrap();
+    out.truncate(len);
+    out
+}
+
+/// An EXR file from its attributes (name, type, value; sorted, as
+/// written) and its chunks (each with its header), one part.
+fn exr_file(deep: bool, attributes: &[(&str, &str, Vec<u8>)], chunks: &[Vec<u8>]) -> Vec<u8> {
+    let mut file = vec![0x76, 0x2f, 0x31, 0x01];
+    file.extend((2u32 | if deep { 0x800 } else { 0 }).to_le_bytes());
+    for (name, kind, value) in attributes {
+        for text in [name, kind] {
+            file.extend(text.as_bytes());
+            file.push(0);
+        }
+        file.extend((value.len() as i32).to_le_bytes());
+        file.extend(value);
+    }
+    file.push(0);
+    let mut offset = (file.len() + 8 * chunks.len()) as u64;
+    for chunk in chunks {
+        file.extend(offset.to_le_bytes());
+        offset += chunk.len() as u64;
+    }
+    chunks.iter().for_each(|c| file.extend(c));
+    file
+}
+
+/// The attributes of a scanline file with `channels` (name, pixel type:
+/// 1 half, 2 float) and data window (x0, y0, x1, y1), ZIPS.
+fn zips_attributes(
+    channels: &[(&str, i32)],
+    window: [i32; 4],
+    deep: bool,
+) -> Vec<(&'static str, &'static str, Vec<u8>)> {
+    let mut list = Vec::new();
+    for (name, kind) in channels {
+        list.extend(name.as_bytes());
+        list.push(0);
+        list.extend(kind.to_le_bytes());
+        list.extend([0, 0, 0, 0]);
+        list.extend(1i32.to_le_bytes());
+        list.extend(1i32.to_le_bytes());
+    }
+    list.push(0);
+    let window: Vec<u8> = window.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let mut attributes = vec![
+        ("channels", "chlist", list),
+        ("compression", "compression", vec![2]),
+        ("dataWindow", "box2i", window.clone()),
+        ("displayWindow", "box2i", window),
+        ("lineOrder", "lineOrder", vec![0]),
+        ("pixelAspectRatio", "float", 1f32.to_le_bytes().to_vec()),
+        ("screenWindowCenter", "v2f", vec![0; 8]),
+        ("screenWindowWidth", "float", 1f32.to_le_bytes().to_vec()),
+    ];
+    if deep {
+        attributes.push(("type", "string", b"deepscanline".to_vec()));
+        attributes.push(("version", "int", 1i32.to_le_bytes().to_vec()));
+    }
+    attributes
+}
+
+/// A one-line deep ZIPS file `width` pixels wide (channels A half, Z float)
+/// whose last pixel holds `samples` samples, all zero: a few hundred
+/// kilobytes of zlib for hundreds of megabytes of samples.
+fn crowded_deep_file(width: usize, samples: usize) -> Vec<u8> {
+    let attributes = zips_attributes(&[("A", 1), ("Z", 2)], [0, 0, width as i32 - 1, 0], true);
+    let mut counts = vec![0u8; 4 * width];
+    counts[4 * (width - 1)..].copy_from_slice(&(samples as i32).to_le_bytes());
+    let table = zip_pack(&counts);
+    let data = zip_pack(&vec![0; samples * 6]);
+    let mut chunk = 0i32.to_le_bytes().to_vec();
+    for size in [table.len(), data.len(), samples * 6] {
+        chunk.extend((size as u64).to_le_bytes());
+    }
+    chunk.extend(table);
+    chunk.extend(data);
+    exr_file(true, &attributes, &[chunk])
+}
+
+#[test]
+fn a_deep_pixel_of_millions_of_samples_is_refused_before_flattening() {
+    // 350 KB unpacking to 360 MB of samples in one pixel: decoded to f32 and
+    // sorted, it took over 4 GiB.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("crowded.exr");
+    std::fs::write(&path, crowded_deep_file(65536, 60_000_000)).unwrap();
+    // The file itself is well-formed: `info` accepts it.
+    let out = limited(&["info", s(&path)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let folder = dir.path().join("out");
+    std::fs::create_dir(&folder).unwrap();
+    let out = limited(&[
+        "flatten",
+        s(&path),
+        "-o",
+        s(&folder.join("flat.exr")),
+        "-q",
+        "--threads",
+        "8",
+    ]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("crowded.exr") && message.contains("deep chunk 0"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&folder).unwrap().count(),
+        0,
+        "nothing left"
+    );
+}
+
+#[test]
+fn an_input_far_wider_than_the_result_is_refused_before_decoding() {
+    // 4 MB of ZIPS, 8 million transparent pixels wide, 64 rows, to the left
+    // of a 64x64 plate: `stencil` keeps the plate's window, and a strip of
+    // the input's chunks, decoded across its own width, took over 4 GiB.
+    let dir = tempfile::tempdir().unwrap();
+    let (wide, plate) = (dir.path().join("wide.exr"), dir.path().join("plate.exr"));
+    let width = 8_000_000;
+    let window = [32 - width as i32, 0, 31, 63];
+    let channels = [("A", 1), ("B", 1), ("G", 1), ("R", 1)];
+    let data = zip_pack(&vec![0; width * 8]);
+    let chunks: Vec<Vec<u8>> = (0..64i32)
+        .map(|y| {
+            let mut chunk = y.to_le_bytes().to_vec();
+            chunk.extend((data.len() as i32).to_le_bytes());
+            chunk.extend(&data);
+            chunk
+        })
+        .collect();
+    std::fs::write(
+        &wide,
+        exr_file(false, &zips_attributes(&channels, window, false), &chunks),
+    )
+    .unwrap();
+    generate(&plate, "bg", (64, 64), &[]);
+    let folder = dir.path().join("out");
+    std::fs::create_dir(&folder).unwrap();
+    let out = limited(&[
+        "merge",
+        "--op",
+        "stencil",
+        s(&wide),
+        s(&plate),
+        "-o",
+        s(&folder.join("o.exr")),
+        "-q",
+        "--threads",
+        "8",
+    ]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("wide.exr") && message.contains("over the"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(
+        std::fs::read_dir(&folder).unwrap().count(),
+        0,
+        "nothing left"
+    );
 }

@@ -4,12 +4,14 @@
 //! the engine sees an ordinary input. specs/ops.md, "Deep data".
 
 use super::graph::union;
+use super::plan::MAX_STRIP_BYTES;
 use super::strip::Rows;
 use crate::error::Result;
 use crate::io::deep::{decode_deep_scanline, DeepBlock};
-use crate::io::reader::ExrFile;
-use exr::block::chunk::CompressedBlock;
+use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
+use exr::block::chunk::{CompressedBlock, CompressedDeepScanLineBlock as DeepChunk};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use exr::meta::header::Header;
 use rayon::prelude::*;
 use std::ops::Range;
 use std::sync::Arc;
@@ -24,6 +26,19 @@ pub fn flat_channels(file: &ExrFile, part: usize) -> Vec<ChannelDescription> {
         .cloned()
         .collect()
 }
+
+/// Most bytes decoding and flattening one deep chunk may take (see
+/// `decoded_bytes`). The reader bounds a chunk's unpacked samples by
+/// `MAX_BLOCK_BYTES`, but a few hundred kilobytes of zlib can unpack to that
+/// many samples in one pixel, each then an f32 per channel and a sort entry:
+/// several times more.
+const MAX_DEEP_CHUNK_BYTES: usize = MAX_BLOCK_BYTES;
+
+/// Per file, chunks read (still compressed) with their indices, in order.
+type ChunksRead = Vec<Vec<(usize, DeepChunk)>>;
+
+/// One sample of a pixel being flattened: depth, alpha, file, block, index.
+type SortEntry = (f32, f32, usize, usize, usize);
 
 pub struct DeepInput {
     /// The files merged, with the part read from each.
@@ -65,7 +80,8 @@ impl DeepInput {
         }
     }
 
-    /// Rows `rows` in columns `(x, width)`, flattened.
+    /// Rows `rows` in columns `(x, width)`, flattened: in batches of rows
+    /// whose chunks, decoded, stay within `MAX_STRIP_BYTES` together.
     pub fn strip(&self, columns: (i32, usize), rows: Range<i32>) -> Result<Rows> {
         let height = (rows.end - rows.start) as usize;
         let mut out = Rows::zeros(
@@ -76,11 +92,6 @@ impl DeepInput {
             self.channels.clone(),
             self.window,
         );
-        let decoded: Vec<Blocks> = self
-            .files
-            .iter()
-            .map(|(file, part)| read_blocks(file, *part, &rows))
-            .collect::<Result<_>>()?;
         // Per file, where each output channel (and Z, A) is among its channels.
         let index = |file: &ExrFile, part: usize, name: &str| {
             file.header(part)
@@ -102,21 +113,92 @@ impl DeepInput {
                 alpha: index(f, *p, "A"),
             })
             .collect();
+        let mut y = rows.start;
+        while y < rows.end {
+            let (end, chunks) = self.batch(y, rows.end)?;
+            let decoded: Vec<Blocks> = self
+                .files
+                .iter()
+                .zip(chunks)
+                .map(|((file, part), chunks)| decode_blocks(file, *part, chunks))
+                .collect::<Result<_>>()?;
+            self.flatten(columns, y..end, &decoded, &maps, &mut out);
+            y = end;
+        }
+        Ok(out)
+    }
+
+    /// The rows from `top` on (before `bottom`) whose chunks, decoded, take
+    /// at most `MAX_STRIP_BYTES` together, at least row `top`'s; and per
+    /// file, those chunks read (still compressed), in order.
+    fn batch(&self, top: i32, bottom: i32) -> Result<(i32, ChunksRead)> {
+        let mut chunks: Vec<Vec<(usize, DeepChunk)>> =
+            self.files.iter().map(|_| Vec::new()).collect();
+        let mut cost = 0;
+        let mut end = top;
+        while end < bottom {
+            // The chunks holding row `end` that the batch does not have yet.
+            let mut added = Vec::new();
+            let mut row_cost = 0;
+            for (f, (file, part)) in self.files.iter().enumerate() {
+                let header = file.header(*part);
+                let window = header.data_window();
+                if end < window.position.y() || end >= window.end().y() {
+                    continue;
+                }
+                let k = (end - window.position.y()) as usize
+                    / header.compression.scan_lines_per_block();
+                if chunks[f].last().is_some_and(|(j, _)| *j == k) {
+                    continue;
+                }
+                let block = read_deep_chunk(file, *part, k)?;
+                let bytes = decoded_bytes(header, &block);
+                if bytes > MAX_DEEP_CHUNK_BYTES {
+                    return Err(file.error(format!(
+                        "deep chunk {k}: its {} bytes of samples would take {bytes} bytes \
+                         decoded and sorted, over the {MAX_DEEP_CHUNK_BYTES}-byte limit",
+                        block.decompressed_sample_data_size
+                    )));
+                }
+                row_cost += bytes;
+                added.push((f, k, block));
+            }
+            if end > top && cost + row_cost > MAX_STRIP_BYTES {
+                break;
+            }
+            cost += row_cost;
+            for (f, k, block) in added {
+                chunks[f].push((k, block));
+            }
+            end += 1;
+        }
+        Ok((end, chunks))
+    }
+
+    /// Flattens rows `rows` from `decoded` (per file, blocks holding them)
+    /// into `out`.
+    fn flatten(
+        &self,
+        columns: (i32, usize),
+        rows: Range<i32>,
+        decoded: &[Blocks],
+        maps: &[ChannelMap],
+        out: &mut Rows,
+    ) {
         let is = |c: &ChannelDescription, n: &str| c.name.eq(n);
         let (alpha_out, z_out) = (
             self.channels.iter().position(|c| is(c, "A")),
             self.channels.iter().position(|c| is(c, "Z")),
         );
         let n = self.channels.len();
-        // Per sample: depth, alpha, file, block, sample index.
-        let mut samples: Vec<(f32, f32, usize, usize, usize)> = Vec::new();
+        let mut samples: Vec<SortEntry> = Vec::new();
         let mut row = vec![vec![0.0f32; columns.1]; n];
-        for y in rows.clone() {
+        for y in rows {
             row.iter_mut().for_each(|r| r.fill(0.0));
             for i in 0..columns.1 {
                 let x = columns.0 + i as i32;
                 samples.clear();
-                for (f, ((file, part), blocks)) in self.files.iter().zip(&decoded).enumerate() {
+                for (f, ((file, part), blocks)) in self.files.iter().zip(decoded).enumerate() {
                     let Some((b, pixel)) = locate(file.header(*part).data_window(), blocks, x, y)
                     else {
                         continue;
@@ -159,41 +241,43 @@ impl DeepInput {
                 plane.write_f32(range.clone(), values);
             }
         }
-        Ok(out)
     }
 }
 
-/// Decodes, in parallel, the chunks of `file` holding rows `rows`.
-fn read_blocks(file: &ExrFile, part: usize, rows: &Range<i32>) -> Result<Blocks> {
-    let header = file.header(part);
-    let window = header.data_window();
-    let lines = header.compression.scan_lines_per_block() as i32;
-    let (top, bottom) = (
-        rows.start.max(window.position.y()),
-        rows.end.min(window.end().y()),
-    );
-    if top >= bottom {
-        return Ok(Blocks {
-            lines: lines as usize,
-            first: 0,
-            blocks: Vec::new(),
-        });
+/// Deep chunk `k` of `file`'s `part`, read but not unpacked.
+fn read_deep_chunk(file: &ExrFile, part: usize, k: usize) -> Result<DeepChunk> {
+    match file.read_chunk(part, k)?.compressed_block {
+        CompressedBlock::DeepScanLine(block) => Ok(block),
+        _ => Err(file.error(format!("chunk {k} is not a deep scanline chunk"))),
     }
-    let first = ((top - window.position.y()) / lines) as usize;
-    let last = ((bottom - 1 - window.position.y()) / lines) as usize;
-    let blocks = (first..=last)
+}
+
+/// What decoding and flattening a deep chunk takes at most, from the sizes it
+/// declares: its samples unpacked, as f32 per channel, and a sort entry each
+/// (a pixel may hold them all); its offset table unpacked and as starts.
+fn decoded_bytes(header: &Header, block: &DeepChunk) -> usize {
+    let unpacked = block.decompressed_sample_data_size;
+    let samples = unpacked / header.channels.bytes_per_pixel.max(1);
+    let per_sample = 4 * header.channels.list.len() + std::mem::size_of::<SortEntry>();
+    let pixels = header.data_window().size.width() * header.compression.scan_lines_per_block();
+    unpacked
+        .saturating_add(samples.saturating_mul(per_sample))
+        .saturating_add(pixels.saturating_mul(4 + std::mem::size_of::<usize>()))
+}
+
+/// Decodes, in parallel, `chunks` (consecutive, in order) of `file`.
+fn decode_blocks(file: &ExrFile, part: usize, chunks: Vec<(usize, DeepChunk)>) -> Result<Blocks> {
+    let header = file.header(part);
+    let first = chunks.first().map_or(0, |(k, _)| *k);
+    let blocks = chunks
         .into_par_iter()
-        .map(|k| {
-            let chunk = file.read_chunk(part, k)?;
-            match &chunk.compressed_block {
-                CompressedBlock::DeepScanLine(block) => decode_deep_scanline(header, block)
-                    .map_err(|m| file.error(format!("deep chunk {k}: {m}"))),
-                _ => Err(file.error(format!("chunk {k} is not a deep scanline chunk"))),
-            }
+        .map(|(k, block)| {
+            decode_deep_scanline(header, &block)
+                .map_err(|m| file.error(format!("deep chunk {k}: {m}")))
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Blocks {
-        lines: lines as usize,
+        lines: header.compression.scan_lines_per_block(),
         first,
         blocks,
     })

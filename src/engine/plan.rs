@@ -20,10 +20,12 @@ use std::sync::Arc;
 /// small enough that the strips in flight stay a few megabytes.
 const STRIP_BYTES: usize = 1 << 20;
 
-/// Most raw output bytes a strip takes to give every thread a block: past it
-/// (blocks of several MiB, on windows tens of thousands of pixels wide) a strip
-/// has fewer blocks, so the memory in flight does not grow with the threads.
-const MAX_STRIP_BYTES: usize = 64 << 20;
+/// Most bytes one strip may take, every node's rows together: a few strips
+/// are in flight at once (decoded, composed, encoded), so this keeps a frame
+/// within a gigabyte or so. One block of rows over it is refused: only a
+/// data window millions of pixels wide (a damaged header, or inputs far
+/// apart) comes near it; real frames take a few megabytes per block.
+pub const MAX_STRIP_BYTES: usize = 256 << 20;
 
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
@@ -306,8 +308,55 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
             false => located(message),
         });
     }
-    let threads = rayon::current_num_threads().min(MAX_STRIP_BYTES / block_bytes.max(1));
-    let blocks = STRIP_BYTES.div_ceil(block_bytes.max(1)).max(threads);
+    // Every node holds the strip's rows across the whole result's width; a
+    // flat input's chunks are decoded across its own width (wider than the
+    // result's when it is clipped), whole blocks covering the strip's rows.
+    // (A deep input's chunks are decoded in batches of their own size.)
+    let row_bytes = channels
+        .iter()
+        .flatten()
+        .map(|c| c.sample_type.bytes_per_sample())
+        .sum::<usize>()
+        .saturating_mul(computed.size.width());
+    let decoded: Vec<(usize, usize)> = (0..inputs.len())
+        .filter(|&i| deep[i].is_none())
+        .map(|i| {
+            let header = header_of(i);
+            let row = header.channels.bytes_per_pixel * input_window(i).size.width();
+            (row, header.compression.scan_lines_per_block())
+        })
+        .collect();
+    let strip_bytes = |rows: usize| {
+        decoded
+            .iter()
+            .map(|&(row, lines)| row.saturating_mul(rows + lines))
+            .fold(row_bytes.saturating_mul(rows), usize::saturating_add)
+    };
+    let smallest = strip_bytes(lines);
+    if smallest > MAX_STRIP_BYTES {
+        let message = format!(
+            "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
+             composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
+             (is a data window damaged?)",
+            window.size.width(),
+            window.size.height(),
+        );
+        // Blame the widest input (the first of the widest): its data window
+        // makes the strips that wide, or inputs far apart do.
+        let widest = (0..inputs.len())
+            .rev()
+            .max_by_key(|&i| input_window(i).size.width());
+        return Err(match widest {
+            Some(i) => inputs[i].error(message),
+            None => Error::usage(message),
+        });
+    }
+    let mut blocks = STRIP_BYTES
+        .div_ceil(block_bytes.max(1))
+        .max(rayon::current_num_threads());
+    while blocks > 1 && strip_bytes(blocks * lines) > MAX_STRIP_BYTES {
+        blocks = (blocks / 2).max(1);
+    }
     Ok(FramePlan {
         frame,
         label,

@@ -7,10 +7,11 @@ use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
 use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, WritableImage};
 use half::f16;
 use std::collections::{BTreeMap, BTreeSet};
-use std::io::Write;
+use std::io::{Read, Seek, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
 use std::sync::{Mutex, Once};
+use std::time::{Duration, Instant};
 
 pub fn exrcomp() -> Command {
     Command::new(env!("CARGO_BIN_EXE_exrcomp"))
@@ -43,13 +44,60 @@ pub fn generate(path: &Path, kind: &str, (width, height): (usize, usize), args: 
 /// Runs exrcomp under a 4 GiB address-space limit (an allocation sized from
 /// a damaged header would abort the process instead of passing quietly).
 pub fn limited(args: &[&str]) -> Output {
-    Command::new("sh")
+    limited_command(args).output().expect("sh runs")
+}
+
+fn limited_command(args: &[&str]) -> Command {
+    let mut command = Command::new("sh");
+    command
         .arg("-c")
         .arg("ulimit -v 4194304; exec \"$0\" \"$@\"")
         .arg(env!("CARGO_BIN_EXE_exrcomp"))
-        .args(args)
-        .output()
-        .expect("sh runs")
+        .args(args);
+    command
+}
+
+/// How a `limited_within` run ended.
+pub struct Ended {
+    /// The exit code; `None` when a signal ended it or it was killed.
+    pub code: Option<i32>,
+    /// The signal that ended it (SIGABRT for a failed allocation).
+    pub signal: Option<i32>,
+    /// Killed for running past its time.
+    pub timed_out: bool,
+    pub stderr: String,
+}
+
+/// `limited`, killed after `timeout`. Standard error goes to a file, so that
+/// a long message (a backtrace) cannot block the child on a full pipe.
+pub fn limited_within(args: &[&str], timeout: Duration) -> Ended {
+    let mut log = tempfile::tempfile().expect("temporary file");
+    let mut child = limited_command(args)
+        .stdout(Stdio::null())
+        .stderr(log.try_clone().expect("file handle"))
+        .spawn()
+        .expect("sh runs");
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("child waited for") {
+            break Some(status);
+        }
+        if started.elapsed() > timeout {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let mut stderr = String::new();
+    log.rewind().expect("rewind");
+    let _ = log.read_to_string(&mut stderr);
+    Ended {
+        code: status.and_then(|s| s.code()),
+        signal: status.and_then(|s| std::os::unix::process::ExitStatusExt::signal(&s)),
+        timed_out: status.is_none(),
+        stderr,
+    }
 }
 
 pub fn stderr(out: &Output) -> String {
@@ -700,4 +748,96 @@ pub fn assert_idiff_identical(idiff: &Path, a: &Path, b: &Path) {
         b.display(),
         String::from_utf8_lossy(&out.stdout)
     );
+}
+
+/// Far above any hostile run's time (well under a second each in a debug build).
+const HOSTILE_TIMEOUT: Duration = Duration::from_secs(60);
+
+/// Arguments from a damaged file, a good plate and an output path.
+pub type HostileArgs = fn(&str, &str, &str) -> Vec<String>;
+
+/// The commands a damaged file goes through (tests/damaged_corpus.rs,
+/// tests/hostile.rs), by name: their arguments for the damaged file, a good
+/// plate and the output path.
+pub fn hostile_commands() -> Vec<(&'static str, HostileArgs)> {
+    fn v(args: &[&str]) -> Vec<String> {
+        args.iter().map(|a| a.to_string()).collect()
+    }
+    vec![
+        ("over (damaged fg)", |d, good, out| {
+            v(&["over", d, good, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("over (damaged bg)", |d, good, out| {
+            v(&["over", good, d, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("transcode", |d, _, out| {
+            v(&["transcode", d, "-o", out, "-q", "--threads", "8"])
+        }),
+        ("blur", |d, _, out| {
+            v(&["blur", "--radius", "3", d, "-o", out, "-q"])
+        }),
+        ("flatten", |d, _, out| v(&["flatten", d, "-o", out, "-q"])),
+        ("info", |d, _, _| v(&["info", d])),
+    ]
+}
+
+/// Whether OpenEXR (oiiotool) decodes every pixel of `path`; without
+/// oiiotool, exrcomp's own check.
+fn decodes(path: &Path, oiiotool: Option<&Path>) -> Result<(), String> {
+    let out = match oiiotool {
+        Some(tool) => Command::new(tool).arg("--stats").arg(path).output(),
+        None => exrcomp().arg("info").arg(path).output(),
+    }
+    .expect("the checker runs");
+    let text = String::from_utf8_lossy(&out.stdout).to_string() + &stderr(&out);
+    if out.status.success() && !text.to_lowercase().contains("error") {
+        Ok(())
+    } else {
+        Err(text)
+    }
+}
+
+/// Runs `args` (one of `hostile_commands`) on `damaged`, writing `out` in
+/// the empty folder `work`: its exit code and what is wrong, if anything
+/// (anything but a decodable output or a one-line error naming the file,
+/// with nothing else left in `work`).
+pub fn hostile_run(
+    damaged: &Path,
+    args: &[String],
+    work: &Path,
+    out: &Path,
+    oiiotool: Option<&Path>,
+) -> (Option<i32>, Option<String>) {
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let ended = limited_within(&args, HOSTILE_TIMEOUT);
+    let name = damaged.file_name().unwrap().to_str().unwrap();
+    let message = ended.stderr.trim_end();
+    let mut left: Vec<String> = std::fs::read_dir(work)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    let wrong = match ended.code {
+        _ if ended.timed_out => Some(format!("still running after {HOSTILE_TIMEOUT:?}")),
+        Some(0) if left != ["out.exr"] && args[0] != "info" => {
+            Some(format!("exit 0, output folder holds {left:?}"))
+        }
+        Some(0) => match args[0] {
+            "info" => None,
+            _ => decodes(out, oiiotool)
+                .err()
+                .map(|e| format!("exit 0 but the output does not decode: {e}")),
+        },
+        Some(3) if !left.is_empty() => Some(format!("exit 3, left {left:?}")),
+        Some(3) if message.lines().count() != 1 || !message.contains(name) => Some(format!(
+            "exit 3 without a one-line message naming the file: {message}"
+        )),
+        Some(3) => None,
+        code => Some(format!(
+            "exit {code:?} (signal {:?}), left {left:?}: {}",
+            ended.signal,
+            message.lines().next().unwrap_or("")
+        )),
+    };
+    (ended.code, wrong)
 }
