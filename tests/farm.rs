@@ -220,7 +220,7 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     for part in [
         "<range>1-7</range>",
         "<chunk>3</chunk>",
-        "--frames #FRAME_START#-#FRAME_END# --resume",
+        "--resume --quiet --frames #FRAME_START#-#FRAME_END#</cmd>",
     ] {
         assert!(spec.contains(part), "{part} not in\n{spec}");
     }
@@ -318,4 +318,207 @@ fn bands_rendered_apart_stitch_into_the_whole_render_byte_for_byte() {
         stderr(&out)
     );
     assert!(!p("gap.exr").exists());
+}
+
+/// Templates that would fail on every task are never written: the command is
+/// parsed by exrcomp's own parser and checked over all the frames first.
+#[test]
+fn no_template_is_written_for_a_command_that_would_fail() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let farm = |command: &[&str]| {
+        let out = exrcomp()
+            .args(["farm", "openjd", "--frames", "1-7", "-o", "job.yaml", "--"])
+            .args(command)
+            .current_dir(d)
+            .output()
+            .unwrap();
+        (out.status.code(), stderr(&out))
+    };
+    for (command, code, words) in [
+        (
+            &["ovr", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"][..],
+            2,
+            "does not parse",
+        ),
+        (
+            &["stitch", "a.exr", "b.exr", "-o", "c.exr"],
+            2,
+            "renders no frames",
+        ),
+        (&["info", "fg.0001.exr"], 2, "renders no frames"),
+        (
+            &["over", "fgg.####.exr", "bg.####.exr", "-o", "c.####.exr"],
+            3,
+            "fgg.####.exr",
+        ),
+        (
+            &["over", "fg.####.exr", "bg.####.exr", "-o", "./bg.####.exr"],
+            2,
+            "refusing to overwrite",
+        ),
+        (
+            &[
+                "blur",
+                "fg.####.exr",
+                "-o",
+                "c.####.exr",
+                "--radius",
+                "1e30",
+            ],
+            2,
+            "radius must be",
+        ),
+    ] {
+        let (got, message) = farm(command);
+        assert_eq!(got, Some(code), "{command:?}: {message}");
+        assert!(message.contains(words), "{command:?}: {message}");
+        assert!(!d.join("job.yaml").exists(), "{command:?} wrote a template");
+    }
+    // Nothing was rendered by the checks.
+    assert!(!d.join("c.0001.exr").exists());
+}
+
+/// Options given to the command in any spelling reach every task once, with
+/// file names made absolute by parsing; chunks are range expressions, and
+/// more tasks than OpenJD lists go to the scheduler's own chunking.
+#[test]
+fn templates_take_any_spelling_and_any_number_of_frames() {
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let make = |farm: &[&str], command: &[&str]| {
+        let out = exrcomp()
+            .args(["farm", "openjd"])
+            .args(farm)
+            .arg("--")
+            .args(command)
+            .current_dir(d)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", stderr(&out));
+    };
+    // --output= and a --resume of the user's own: one --resume per task.
+    let over = [
+        "over",
+        "fg.####.exr",
+        "bg.####.exr",
+        "--output=jobs/out/c.####.exr",
+        "--resume",
+        "-q",
+    ];
+    make(
+        &["--frames", "1-7", "--chunk", "3", "-o", "jobs/a/job.yaml"],
+        &over,
+    );
+    let template = std::fs::read_to_string(d.join("jobs/a/job.yaml")).unwrap();
+    let output = d.join("jobs/out/c.####.exr");
+    assert!(
+        template.contains(&format!("\"{}\"", s(&output))),
+        "{template}"
+    );
+    assert_eq!(template.matches("--resume").count(), 1, "{template}");
+    assert_eq!(
+        template.matches("\"-q\"").count() + template.matches("--quiet").count(),
+        1
+    );
+    openjd(&openjd_cli, &["check", "jobs/a/job.yaml"], d);
+    openjd(
+        &openjd_cli,
+        &["run", "jobs/a/job.yaml", "--step", "exrcomp"],
+        d,
+    );
+    local_over(d);
+    for frame in 1..=7 {
+        let name = format!("c.{frame:04}.exr");
+        let local = format!("local/comp.{frame:04}.exr");
+        assert_eq!(
+            std::fs::read(d.join("jobs/out").join(name)).unwrap(),
+            std::fs::read(d.join(local)).unwrap()
+        );
+    }
+    // Stepped frames: each chunk a range expression, not a list.
+    make(
+        &["--frames", "1-7x2", "--chunk", "2", "-o", "b.yaml"],
+        &["over", "fg.####.exr", "bg.####.exr", "-o", "b/c.####.exr"],
+    );
+    let template = std::fs::read_to_string(d.join("b.yaml")).unwrap();
+    assert!(
+        template.contains(r#"range: ["1-3:2", "5-7:2"]"#),
+        "{template}"
+    );
+    openjd(&openjd_cli, &["check", "b.yaml"], d);
+    // 2,000 one-frame chunks: more than OpenJD lists, so the scheduler chunks
+    // (CHUNK[INT]); a file name with {{ goes through a parameter.
+    for frame in 8..=2000 {
+        std::fs::copy(
+            d.join("fg.0001.exr"),
+            d.join(format!("f{{{{x}}}}.{frame:04}.exr")),
+        )
+        .unwrap();
+    }
+    for frame in 1..=7 {
+        std::fs::copy(
+            d.join("fg.0001.exr"),
+            d.join(format!("f{{{{x}}}}.{frame:04}.exr")),
+        )
+        .unwrap();
+    }
+    let listed = exrcomp()
+        .args([
+            "farm", "openjd", "--frames", "1-2000", "--chunk", "1", "-o", "c.yaml", "--",
+        ])
+        .args(["premult", "f{{x}}.####.exr", "-o", "c/p.####.exr"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert_eq!(listed.status.code(), Some(2));
+    assert!(
+        stderr(&listed).contains("--task-chunking"),
+        "{}",
+        stderr(&listed)
+    );
+    make(
+        &[
+            "--frames",
+            "1-2000",
+            "--chunk",
+            "100",
+            "--target-runtime",
+            "60",
+            "-o",
+            "c.yaml",
+        ],
+        &["premult", "f{{x}}.####.exr", "-o", "c/p.####.exr"],
+    );
+    let template = std::fs::read_to_string(d.join("c.yaml")).unwrap();
+    for part in [
+        "extensions: [TASK_CHUNKING]",
+        "type: CHUNK[INT]",
+        r#"range: "1-2000""#,
+        "rangeConstraint: CONTIGUOUS",
+        "targetRuntimeSeconds: 60",
+        "{{Param.Arg1}}",
+    ] {
+        assert!(template.contains(part), "{part} not in {template}");
+    }
+    openjd(&openjd_cli, &["check", "c.yaml"], d);
+    openjd(
+        &openjd_cli,
+        &[
+            "run",
+            "c.yaml",
+            "--step",
+            "exrcomp",
+            "--task-param",
+            "Frames=1995-2000",
+        ],
+        d,
+    );
+    assert!(d.join("c/p.2000.exr").exists() && d.join("c/p.1995.exr").exists());
+    assert!(!d.join("c/p.1994.exr").exists());
 }
