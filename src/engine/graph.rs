@@ -83,6 +83,31 @@ impl Graph {
         self.nodes.len() - 1
     }
 
+    /// The most that nodes hold at once as compose sweeps them in order,
+    /// node `n` holding `size(n)`: from when it is computed until its last
+    /// consumer has read it (the output, until it is written).
+    pub fn peak(&self, size: impl Fn(usize) -> usize) -> usize {
+        let mut last_use: Vec<usize> = (0..self.nodes.len()).collect();
+        for (n, node) in self.nodes.iter().enumerate() {
+            if let Node::Op { inputs, .. } = node {
+                inputs.iter().for_each(|&i| last_use[i] = n);
+            }
+        }
+        let (mut live, mut peak) = (0usize, 0usize);
+        for (n, node) in self.nodes.iter().enumerate() {
+            live = live.saturating_add(size(n));
+            peak = peak.max(live);
+            if let Node::Op { inputs, .. } = node {
+                for &i in inputs {
+                    if last_use[i] == n {
+                        live -= size(i);
+                    }
+                }
+            }
+        }
+        peak
+    }
+
     /// Per node, a value computed from its inputs' values: `input` for input
     /// nodes, `combine(op, values of its inputs)` for operations.
     pub fn evaluate<T: Clone>(
@@ -131,4 +156,32 @@ pub fn intersection(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
         return IntegerBounds::zero();
     }
     IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ops::premult::Premult;
+
+    fn op() -> Box<dyn Op> {
+        Box::new(Premult {
+            inverse: false,
+            layers: Default::default(),
+        })
+    }
+
+    #[test]
+    fn the_peak_counts_only_the_nodes_alive_at_once() {
+        // A chain holds a node and its input; a merge of three, all four.
+        let chain = Graph::chain(1, (0..100).map(|n| (op(), vec![n])).collect());
+        assert_eq!(chain.peak(|_| 1), 2);
+        let merge = Graph::chain(3, vec![(op(), vec![0, 1, 2])]);
+        assert_eq!(merge.peak(|_| 1), 4);
+        // An input read again further down stays alive until then.
+        let reuse = Graph::chain(
+            1,
+            vec![(op(), vec![0]), (op(), vec![1]), (op(), vec![2, 0])],
+        );
+        assert_eq!(reuse.peak(|n| 10 + n), 10 + 12 + 13);
+    }
 }

@@ -308,16 +308,18 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
             false => located(message),
         });
     }
-    // Every node holds the strip's rows across the whole result's width; a
+    // The nodes hold the strip's rows across the whole result's width (those
+    // alive at once, `Graph::peak`); a
     // flat input's chunks are decoded across its own width (wider than the
     // result's when it is clipped), whole blocks covering the strip's rows.
     // (A deep input's chunks are decoded in batches of their own size.)
-    let row_bytes = channels
-        .iter()
-        .flatten()
-        .map(|c| c.sample_type.bytes_per_sample())
-        .sum::<usize>()
-        .saturating_mul(computed.size.width());
+    let row_bytes = graph.peak(|n| {
+        channels[n]
+            .iter()
+            .map(|c| c.sample_type.bytes_per_sample())
+            .sum::<usize>()
+            .saturating_mul(computed.size.width())
+    });
     let decoded: Vec<(usize, usize)> = (0..inputs.len())
         .filter(|&i| deep[i].is_none())
         .map(|i| {
@@ -356,6 +358,10 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         .max(rayon::current_num_threads());
     while blocks > 1 && strip_bytes(blocks * lines) > MAX_STRIP_BYTES {
         blocks = (blocks / 2).max(1);
+    }
+    // Asked for (tests of strip boundaries), within the same memory bound.
+    if let Some(rows) = job.strip_rows {
+        blocks = blocks.min(rows.div_ceil(lines).max(1));
     }
     Ok(FramePlan {
         frame,
