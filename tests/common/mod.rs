@@ -340,6 +340,20 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
     image.write().to_file(path).expect("test image written");
 }
 
+/// A single-part multi-view file: `img`'s channels under a `multiView`
+/// attribute listing `views`, the first of them the default view (ZIP).
+pub fn write_multi_view(path: &Path, img: &Img, views: &[&str]) {
+    let attributes = LayerAttributes {
+        multi_view_names: Some(views.iter().map(|&v| v.into()).collect()),
+        ..Default::default()
+    };
+    let layer = layer(img, attributes, Compression::ZIP16, LineOrder::Increasing);
+    Image::from_layer(layer)
+        .write()
+        .to_file(path)
+        .expect("test image written");
+}
+
 /// A multi-part file: per part its name, its view and its pixels (ZIP).
 pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
     let layers: Vec<_> = parts
