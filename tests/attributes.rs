@@ -135,3 +135,89 @@ fn every_attribute_survives_and_runs_write_identical_bytes() {
     assert!(out.status.success(), "{}", stderr(&out));
     assert_eq!(header_text(&exrheader, &output), expected);
 }
+
+/// `bytes` of a single-part file with attribute `name` of type `kind`
+/// holding `value(old value)`; the chunk offsets move with the header.
+fn retyped(bytes: &[u8], name: &str, kind: &str, value: impl Fn(&[u8]) -> Vec<u8>) -> Vec<u8> {
+    let text_end = |from: usize| from + bytes[from..].iter().position(|&b| b == 0).unwrap();
+    let mut out = bytes[..8].to_vec();
+    let mut at = 8;
+    while bytes[at] != 0 {
+        let name_end = text_end(at);
+        let kind_end = text_end(name_end + 1);
+        let size = i32::from_le_bytes(bytes[kind_end + 1..kind_end + 5].try_into().unwrap());
+        let end = kind_end + 5 + size as usize;
+        if &bytes[at..name_end] == name.as_bytes() {
+            let new = value(&bytes[kind_end + 5..end]);
+            for text in [name, kind] {
+                out.extend_from_slice(text.as_bytes());
+                out.push(0);
+            }
+            out.extend_from_slice(&(new.len() as i32).to_le_bytes());
+            out.extend_from_slice(&new);
+        } else {
+            out.extend_from_slice(&bytes[at..end]);
+        }
+        at = end;
+    }
+    out.push(0);
+    let table = at + 1;
+    let moved = out.len() as i64 - table as i64;
+    let first = u64::from_le_bytes(bytes[table..table + 8].try_into().unwrap()) as usize;
+    for entry in bytes[table..first].chunks_exact(8) {
+        let offset = u64::from_le_bytes(entry.try_into().unwrap()) as i64 + moved;
+        out.extend_from_slice(&(offset as u64).to_le_bytes());
+    }
+    out.extend_from_slice(&bytes[first..]);
+    out
+}
+
+#[test]
+fn mistyped_standard_attributes_are_refused_as_openexr_refuses_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let plain = d.join("plain.exr");
+    generate(&plain, "bg", (16, 12), &[]);
+    let bytes = std::fs::read(&plain).unwrap();
+    // The file is sound before it is patched.
+    let same = d.join("same.exr");
+    std::fs::write(
+        &same,
+        retyped(&bytes, "lineOrder", "lineOrder", <[u8]>::to_vec),
+    )
+    .unwrap();
+    assert!(run(&["info", s(&same)]).status.success());
+    let cases: [(&str, &str, &str, fn(&[u8]) -> Vec<u8>); 5] = [
+        ("lineOrder", "int", "lineOrder", |old| vec![old[0], 0, 0, 0]),
+        ("dataWindow", "v2i", "box2i", |old| old.to_vec()),
+        ("compression", "int", "compression", |old| {
+            vec![old[0], 0, 0, 0]
+        }),
+        ("pixelAspectRatio", "double", "float", |_| {
+            1f64.to_le_bytes().to_vec()
+        }),
+        ("channels", "string", "chlist", |old| old.to_vec()),
+    ];
+    for (name, kind, wanted, value) in cases {
+        let path = d.join(format!("{name}.exr"));
+        std::fs::write(&path, retyped(&bytes, name, kind, value)).unwrap();
+        if let Some(exrheader) = peer("exrheader") {
+            let out = Command::new(exrheader).arg(&path).output().unwrap();
+            assert!(!out.status.success(), "OpenEXR reads {name} as {kind}");
+        }
+        let expected =
+            format!("attribute '{name}' has type '{kind}' where OpenEXR requires '{wanted}'");
+        for command in [
+            vec!["info", s(&path)],
+            vec!["transcode", s(&path), "-o", s(&d.join("out.exr")), "-q"],
+        ] {
+            let out = run(&command);
+            assert_eq!(out.status.code(), Some(3), "{command:?}: {}", stderr(&out));
+            assert!(
+                stderr(&out).contains(&expected),
+                "{command:?}: {}",
+                stderr(&out)
+            );
+        }
+    }
+}

@@ -45,6 +45,7 @@ impl ExrFile {
         let mmap = unsafe { Mmap::map(&file) }.map_err(|e| err(format!("cannot map: {e}")))?;
         let file_len = mmap.len();
 
+        super::standard_attributes::check(&mmap).map_err(err)?;
         let mut rest: &[u8] = &mmap[..];
         let meta = catch_panic(|| MetaData::read_from_buffered(&mut rest, false))
             .map_err(|p| err(format!("not a readable EXR header (decoder panic: {p})")))?
