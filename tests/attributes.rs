@@ -9,7 +9,8 @@ use std::path::Path;
 use std::process::Command;
 
 /// exrheader's text of `path` without the lines exrcomp owns: the file
-/// name, its provenance and the chunk count it declares.
+/// name, its provenance (`Software`, and `Exif:ImageHistory`, a string of
+/// several lines) and the chunk count it declares.
 fn header_text(exrheader: &Path, path: &Path) -> String {
     let out = Command::new(exrheader).arg(path).output().unwrap();
     assert!(
@@ -17,10 +18,17 @@ fn header_text(exrheader: &Path, path: &Path) -> String {
         "exrheader cannot read {}",
         path.display()
     );
+    let mut in_history = false;
     String::from_utf8_lossy(&out.stdout)
         .lines()
         .filter(|l| {
-            !l.starts_with("file ") && !l.starts_with("software ") && !l.starts_with("chunkCount ")
+            in_history |= l.starts_with("Exif:ImageHistory ");
+            let owned = in_history
+                || ["file ", "Software ", "chunkCount "]
+                    .iter()
+                    .any(|p| l.starts_with(p));
+            in_history &= !l.ends_with('"');
+            !owned
         })
         .collect::<Vec<_>>()
         .join("\n")
@@ -220,4 +228,109 @@ fn mistyped_standard_attributes_are_refused_as_openexr_refuses_them() {
             );
         }
     }
+}
+
+/// The string attribute `name` of `path`'s first part, if it has one.
+fn string_attribute(path: &Path, name: &str) -> Option<String> {
+    let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+    let value = meta.headers[0]
+        .all_named_attributes()
+        .find(|(n, _)| *n == name.as_bytes())
+        .map(|(_, value)| match value {
+            exr::meta::attribute::AttributeValue::Text(text) => text.to_string(),
+            other => panic!("{name} is {other:?}"),
+        });
+    value
+}
+
+#[test]
+fn outputs_say_who_wrote_them_and_keep_the_history_of_their_input() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let ours = concat!("exrcomp ", env!("CARGO_PKG_VERSION"));
+    // oiiotool's convention: `Software` names the writer, `Exif:ImageHistory`
+    // collects one line per step.
+    let input = d.join("in.exr");
+    let made = Command::new(&oiiotool)
+        .args([
+            "--pattern",
+            "constant:color=0.5,0.2,0.1,1",
+            "32x24",
+            "4",
+            "-o",
+        ])
+        .arg(&input)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    let history = string_attribute(&input, "Exif:ImageHistory").unwrap();
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(string_attribute(&output, "Software").as_deref(), Some(ours));
+    assert_eq!(string_attribute(&output, "software"), None);
+    assert_eq!(
+        string_attribute(&output, "Exif:ImageHistory"),
+        Some(format!("{history}\n{ours}"))
+    );
+    // Without a history, the input's writer starts it.
+    let plain = d.join("plain.exr");
+    let made = Command::new(&oiiotool)
+        .arg(&input)
+        .args(["--nosoftwareattrib", "--eraseattrib", "Exif:ImageHistory"])
+        .args(["--attrib", "Software", "Renderer 7", "-o"])
+        .arg(&plain)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    assert_eq!(string_attribute(&plain, "Exif:ImageHistory"), None);
+    let out = run(&["transcode", s(&plain), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        string_attribute(&output, "Exif:ImageHistory"),
+        Some(format!("Renderer 7\n{ours}"))
+    );
+    assert_peers_read(&output);
+}
+
+#[test]
+fn a_preview_of_the_input_is_dropped() {
+    use exr::prelude::*;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in.exr");
+    let pixels = SpecificChannels::rgba(|_: Vec2<usize>| (0.5f32, 0.25f32, 0.125f32, 1.0f32));
+    let preview = exr::meta::attribute::Preview {
+        size: Vec2(2, 2),
+        pixel_data: vec![255; 16].into_iter().map(|b: u8| b as i8).collect(),
+    };
+    let attributes = LayerAttributes {
+        preview: Some(preview),
+        ..LayerAttributes::named("rgba")
+    };
+    Image::from_layer(Layer::new(
+        (8, 6),
+        attributes,
+        Encoding {
+            compression: Compression::ZIP16,
+            blocks: Blocks::ScanLines,
+            line_order: LineOrder::Increasing,
+        },
+        pixels,
+    ))
+    .write()
+    .to_file(&input)
+    .unwrap();
+    let has_preview = |path: &Path| {
+        let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+        meta.headers[0].own_attributes.preview.is_some()
+    };
+    assert!(has_preview(&input));
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!has_preview(&output));
 }
