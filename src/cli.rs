@@ -275,10 +275,13 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
-    /// Describe EXR files and check that every chunk decodes.
+    /// Describe EXR files as exrheader does and check that every chunk decodes.
     Info {
         #[arg(required = true)]
         files: Vec<PathBuf>,
+        /// One JSON object per file, on a line of its own, with the same facts.
+        #[arg(long)]
+        json: bool,
     },
     /// Generate a synthetic shot and composite it.
     Demo {

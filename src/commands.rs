@@ -309,7 +309,7 @@ pub fn run(command: Command) -> Result<()> {
                 input_job(&[input], &output, graph, 0, &LayerArgs::default(), &run)?;
             run_job(&job, "transcode", &run, summary)
         }
-        Command::Info { files } => info(&files),
+        Command::Info { files, json } => info(&files, json),
         Command::Demo {
             dir,
             length,
@@ -624,14 +624,18 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     }
 }
 
-fn info(files: &[std::path::PathBuf]) -> Result<()> {
+fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
+    let describe = |path: &std::path::Path| match json {
+        true => crate::info::describe_json(path).map(|v| format!("{v}\n")),
+        false => crate::info::describe(path),
+    };
     if let [file] = files {
-        print!("{}", crate::info::describe(file)?);
+        print!("{}", describe(file)?);
         return Ok(());
     }
     let mut failed: Vec<Error> = Vec::new();
     for path in files {
-        match crate::info::describe(path) {
+        match describe(path) {
             Ok(text) => print!("{text}"),
             Err(e) => {
                 eprintln!("exrcomp: error: {e}");

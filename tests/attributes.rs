@@ -5,7 +5,7 @@
 
 mod common;
 use common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// exrheader's text of `path` without the lines exrcomp owns: the file
@@ -34,15 +34,12 @@ fn header_text(exrheader: &Path, path: &Path) -> String {
         .join("\n")
 }
 
-#[test]
-fn every_attribute_survives_and_runs_write_identical_bytes() {
-    let (Some(exrheader), Some(exrstdattr), Some(oiiotool)) =
-        (peer("exrheader"), peer("exrstdattr"), peer("oiiotool"))
-    else {
-        return;
+/// `d/in.exr`, holding every standard attribute exrstdattr sets and custom
+/// ones of many types; `None` without the peer tools that make it.
+fn every_attribute_input(d: &Path) -> Option<PathBuf> {
+    let (Some(exrstdattr), Some(oiiotool)) = (peer("exrstdattr"), peer("oiiotool")) else {
+        return None;
     };
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
     generate(&d.join("plain.exr"), "bg", (40, 36), &[]);
     // Custom attributes of many types, as oiiotool and Nuke write them.
     let out = Command::new(oiiotool)
@@ -124,6 +121,16 @@ fn every_attribute_survives_and_runs_write_identical_bytes() {
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", stderr(&out));
+    Some(input)
+}
+
+#[test]
+fn every_attribute_survives_and_runs_write_identical_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (Some(exrheader), Some(input)) = (peer("exrheader"), every_attribute_input(d)) else {
+        return;
+    };
     let expected = header_text(&exrheader, &input);
     assert!(expected.contains("keyCode") && expected.contains("studio:m44"));
     let outputs: Vec<Vec<u8>> = (0..3)
@@ -195,7 +202,14 @@ fn mistyped_standard_attributes_are_refused_as_openexr_refuses_them() {
     )
     .unwrap();
     assert!(run(&["info", s(&same)]).status.success());
-    let cases: [(&str, &str, &str, fn(&[u8]) -> Vec<u8>); 5] = [
+    // Attribute, type written, type OpenEXR requires, value from the old one.
+    type Case = (
+        &'static str,
+        &'static str,
+        &'static str,
+        fn(&[u8]) -> Vec<u8>,
+    );
+    let cases: [Case; 5] = [
         ("lineOrder", "int", "lineOrder", |old| vec![old[0], 0, 0, 0]),
         ("dataWindow", "v2i", "box2i", |old| old.to_vec()),
         ("compression", "int", "compression", |old| {
@@ -333,4 +347,95 @@ fn a_preview_of_the_input_is_dropped() {
     let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert!(!has_preview(&output));
+}
+
+/// `exrcomp info`'s text of `path`, less its first line (the file, which
+/// exrheader names without the size) and its chunk checks (`pixels:`).
+fn info_text(path: &Path) -> String {
+    let out = run(&["info", s(path)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| !l.starts_with("file ") && !l.starts_with("pixels: "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// exrheader's text of `path` less its first line.
+fn exrheader_text(exrheader: &Path, path: &Path) -> String {
+    let out = Command::new(exrheader).arg(path).output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| !l.starts_with("file "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn info_prints_what_exrheader_prints() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (Some(exrheader), Some(input)) = (peer("exrheader"), every_attribute_input(d)) else {
+        return;
+    };
+    // Every attribute type, in a file of ours (which declares its chunkCount
+    // and type), in a multi-part file of the exr crate's, and tiled.
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let parts = d.join("parts.exr");
+    let img = random_rgba(71, 2, 3, 12, 10, Kind::Float, true);
+    write_parts(&parts, &[("rgba", "left", &img), ("other", "right", &img)]);
+    let tiled = d.join("tiled.exr");
+    if let Some(oiiotool) = peer("oiiotool") {
+        let out = Command::new(oiiotool)
+            .arg(&output)
+            .args(["--tile", "16", "16", "-o"])
+            .arg(&tiled)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", stderr(&out));
+    }
+    for path in [&output, &parts, &tiled] {
+        if path.exists() {
+            assert_eq!(
+                info_text(path),
+                exrheader_text(&exrheader, path),
+                "{}",
+                path.display()
+            );
+        }
+    }
+    let text = String::from_utf8_lossy(&run(&["info", s(&parts)]).stdout).into_owned();
+    assert!(text.contains(" part 1:\n"), "{text}");
+    assert!(text.contains("pixels: all 1 chunks decode"), "{text}");
+}
+
+#[test]
+fn info_json_gives_the_same_facts_per_part() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let parts = d.join("parts.exr");
+    let img = random_rgba(72, 2, 3, 12, 40, Kind::Half, false);
+    write_parts(&parts, &[("rgba", "left", &img), ("other", "right", &img)]);
+    let out = run(&["info", "--json", s(&parts)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let facts: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(facts["file"], s(&parts));
+    assert_eq!(facts["flags"], 0x1000);
+    let part = &facts["parts"][1];
+    assert_eq!(part["chunks"], 3);
+    assert_eq!(part["checked"], "all 3 chunks decode");
+    let attributes = &part["attributes"];
+    assert_eq!(
+        attributes["dataWindow"],
+        serde_json::json!({"type": "box2i", "value": {"min": [2, 3], "max": [13, 42]}})
+    );
+    assert_eq!(attributes["compression"]["value"], "zip");
+    assert_eq!(attributes["view"]["value"], "right");
+    assert_eq!(
+        attributes["channels"]["value"][1],
+        serde_json::json!({"name": "B", "type": "half", "sampling": [1, 1], "plinear": false})
+    );
 }

@@ -2,7 +2,10 @@
 //! file whose `lineOrder`, `dataWindow`, `compression`... has another type;
 //! the exr crate keeps such an attribute as a custom one, or drops it, and
 //! reads on (and a file written from that header was one OpenEXR refuses).
-//! So the raw header is checked here, before the crate parses it.
+//! So the raw header is checked here, before the crate parses it. The same
+//! walk lists the attributes a file holds, for `info`.
+
+use std::io::{BufRead, Read};
 
 /// Each attribute OpenEXR's reader checks the type of, and that type
 /// (OpenEXRCore's `check_req_attr`).
@@ -32,51 +35,83 @@ const MULTIPART_FLAG: u8 = 0x10;
 /// too damaged to walk is left to the full parse, which reports it.
 pub fn check(file: &[u8]) -> Result<(), String> {
     let multipart = file.get(5).is_some_and(|flags| flags & MULTIPART_FLAG != 0);
-    let mut at = 8;
-    for part in 0.. {
-        while let Some((name, kind, end)) = attribute(file, at) {
-            if let Some((_, wanted)) = REQUIRED.iter().find(|(n, _)| n.as_bytes() == name) {
-                if kind != wanted.as_bytes() {
-                    let place = if multipart {
-                        format!("part {part}: ")
-                    } else {
-                        String::new()
-                    };
-                    return Err(format!(
-                        "{place}attribute '{}' has type '{}' where OpenEXR requires '{wanted}'",
-                        String::from_utf8_lossy(name),
-                        String::from_utf8_lossy(kind)
-                    ));
-                }
-            }
-            at = end;
-        }
-        // The header's closing null byte; a second one ends the part list.
-        at += 1;
-        if !multipart || file.get(at).is_none_or(|&b| b == 0) {
-            break;
+    for Attribute { part, name, kind } in attributes(&mut &file[..]) {
+        let Some((_, wanted)) = REQUIRED.iter().find(|(n, _)| *n == name) else {
+            continue;
+        };
+        if kind != *wanted {
+            let place = if multipart {
+                format!("part {part}: ")
+            } else {
+                String::new()
+            };
+            return Err(format!(
+                "{place}attribute '{name}' has type '{kind}' where OpenEXR requires '{wanted}'"
+            ));
         }
     }
     Ok(())
 }
 
-/// The attribute at `at`: its name, its type name and where it ends; `None`
-/// at the end of a header or where the bytes do not hold an attribute.
-fn attribute(file: &[u8], at: usize) -> Option<(&[u8], &[u8], usize)> {
-    let text = |from: usize| -> Option<(&[u8], usize)> {
-        let rest = file.get(from..)?;
-        let len = rest.iter().take(MAX_NAME + 1).position(|&b| b == 0)?;
-        Some((&rest[..len], from + len + 1))
-    };
-    let (name, after_name) = text(at)?;
-    if name.is_empty() {
-        return None;
+/// One attribute as the file holds it.
+pub struct Attribute {
+    pub part: usize,
+    pub name: String,
+    /// Its type name.
+    pub kind: String,
+}
+
+/// Every attribute of every header of `file`, read from its start, in file
+/// order; where the bytes stop holding attributes, those read so far.
+pub fn attributes(file: &mut impl BufRead) -> Vec<Attribute> {
+    let mut found = Vec::new();
+    let mut start = [0u8; 8];
+    if file.read_exact(&mut start).is_err() {
+        return found;
     }
-    let (kind, after_kind) = text(after_name)?;
-    let size = file.get(after_kind..after_kind + 4)?;
-    let size = usize::try_from(i32::from_le_bytes(size.try_into().ok()?)).ok()?;
-    let end = (after_kind + 4).checked_add(size)?;
-    (end <= file.len()).then_some((name, kind, end))
+    let multipart = start[5] & MULTIPART_FLAG != 0;
+    for part in 0.. {
+        loop {
+            let name = match text(file) {
+                Some(name) if !name.is_empty() => name,
+                Some(_) => break,
+                None => return found,
+            };
+            let Some(kind) = text(file) else {
+                return found;
+            };
+            let mut size = [0u8; 4];
+            if file.read_exact(&mut size).is_err() {
+                return found;
+            }
+            let Ok(size) = u64::try_from(i32::from_le_bytes(size)) else {
+                return found;
+            };
+            let skipped = std::io::copy(&mut file.take(size), &mut std::io::sink());
+            if skipped.ok() != Some(size) {
+                return found;
+            }
+            found.push(Attribute { part, name, kind });
+        }
+        // A header ends with a null byte (read above); in a multi-part file,
+        // an empty header, one more null byte, ends the list.
+        let ended = file
+            .fill_buf()
+            .map_or(true, |next| next.first().is_none_or(|&b| b == 0));
+        if !multipart || ended {
+            break;
+        }
+    }
+    found
+}
+
+/// A null-terminated name of at most `MAX_NAME` bytes.
+fn text(file: &mut impl BufRead) -> Option<String> {
+    let mut bytes = Vec::new();
+    file.take(MAX_NAME as u64 + 1)
+        .read_until(0, &mut bytes)
+        .ok()?;
+    (bytes.pop() == Some(0)).then(|| String::from_utf8_lossy(&bytes).into_owned())
 }
 
 #[cfg(test)]
