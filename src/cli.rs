@@ -285,10 +285,13 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
-    /// Describe EXR files and check that every chunk decodes.
+    /// Describe EXR files as exrheader does and check that every chunk decodes.
     Info {
         #[arg(value_hint = ValueHint::FilePath, required = true)]
         files: Vec<PathBuf>,
+        /// One JSON object per file, on a line of its own, with the same facts.
+        #[arg(long)]
+        json: bool,
     },
     /// Generate a synthetic shot and composite it.
     Demo {
@@ -436,6 +439,11 @@ pub struct RunArgs {
     /// The default 2 writes files within 2.5% of OpenEXR's size.
     #[arg(long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
+    /// DWAA and DWAB output's compression level, written as the file's
+    /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as
+    /// OpenEXR's).
+    #[arg(long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
+    pub dwa_level: Option<f32>,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
     #[arg(long, value_enum, default_value = "error")]

@@ -26,6 +26,7 @@ use crate::ops::premult::Premult;
 use crate::ops::stereo::Stereo;
 use crate::ops::vblur::VectorBlur;
 use crate::ops::zmerge::ZMerge;
+use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -316,7 +317,7 @@ pub fn run(command: Command) -> Result<()> {
                 input_job(&[input], &output, graph, 0, &LayerArgs::default(), &run)?;
             run_job(&job, "transcode", &run, summary)
         }
-        Command::Info { files } => info(&files),
+        Command::Info { files, json } => info(&files, json),
         Command::Demo {
             dir,
             length,
@@ -510,26 +511,37 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
 }
 
 fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
-    let Some(name) = &run.compression else {
-        return Ok(None);
+    let dwa_level = Some(run.dwa_level.unwrap_or(DEFAULT_DWA_LEVEL));
+    let compression = match run.compression.as_deref().map(str::to_ascii_lowercase) {
+        None => None,
+        Some(name) => Some(match name.as_str() {
+            "none" => Compression::Uncompressed,
+            "rle" => Compression::RLE,
+            "zips" => Compression::ZIP1,
+            "zip" => Compression::ZIP16,
+            "piz" => Compression::PIZ,
+            "pxr24" => Compression::PXR24,
+            "b44" => Compression::B44,
+            "b44a" => Compression::B44A,
+            "dwaa" => Compression::DWAA(dwa_level),
+            "dwab" => Compression::DWAB(dwa_level),
+            other => {
+                return Err(Error::usage(format!(
+                    "unknown compression '{other}' (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab)"
+                )))
+            }
+        }),
     };
-    Ok(Some(match name.to_ascii_lowercase().as_str() {
-        "none" => Compression::Uncompressed,
-        "rle" => Compression::RLE,
-        "zips" => Compression::ZIP1,
-        "zip" => Compression::ZIP16,
-        "piz" => Compression::PIZ,
-        "pxr24" => Compression::PXR24,
-        "b44" => Compression::B44,
-        "b44a" => Compression::B44A,
-        "dwaa" => Compression::DWAA(None),
-        "dwab" => Compression::DWAB(None),
-        other => {
-            return Err(Error::usage(format!(
-                "unknown compression '{other}' (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab)"
-            )))
-        }
-    }))
+    let dwa = matches!(
+        compression,
+        Some(Compression::DWAA(_) | Compression::DWAB(_))
+    );
+    if run.dwa_level.is_some() && !dwa {
+        return Err(Error::usage(
+            "--dwa-level applies to dwaa and dwab output: give --compression dwaa or dwab",
+        ));
+    }
+    Ok(compression)
 }
 
 /// Runs `job`, prints its summary, and turns failed frames or an
@@ -630,14 +642,18 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     }
 }
 
-fn info(files: &[std::path::PathBuf]) -> Result<()> {
+fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
+    let describe = |path: &std::path::Path| match json {
+        true => crate::info::describe_json(path).map(|v| format!("{v}\n")),
+        false => crate::info::describe(path),
+    };
     if let [file] = files {
-        print!("{}", crate::info::describe(file)?);
+        print!("{}", describe(file)?);
         return Ok(());
     }
     let mut failed: Vec<Error> = Vec::new();
     for path in files {
-        match crate::info::describe(path) {
+        match describe(path) {
             Ok(text) => print!("{text}"),
             Err(e) => {
                 eprintln!("exrcomp: error: {e}");

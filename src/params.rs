@@ -60,6 +60,11 @@ pub const BALANCE: Bound = bound("balance", 0.0, 1.0);
 pub const CLIP: Bound = bound("clip", 0.0, 1.0);
 pub const THRESHOLD: Bound = bound("threshold", 0.0, 1e6);
 pub const SOFTNESS: Bound = bound("softness", 0.0, 1e6);
+/// DWAA/DWAB's `dwaCompressionLevel`: its quantisation step is the level /
+/// 100000 of a JPEG table step, so 100000 already flattens every block.
+pub const DWA_LEVEL: Bound = bound("dwa_level", 0.0, 1e5);
+/// OpenEXR's default DWA level (oiiotool's `dwaa` is `dwaa:45`).
+pub const DEFAULT_DWA_LEVEL: f32 = 45.0;
 
 /// `--threads`: at least one, at most `THREADS_PER_CORE` per core the
 /// machine has (more only costs memory and start-up).

@@ -5,11 +5,12 @@
 
 mod common;
 use common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// exrheader's text of `path` without the lines exrcomp owns: the file
-/// name, its provenance and the chunk count it declares.
+/// name, its provenance (`Software`, and `Exif:ImageHistory`, a string of
+/// several lines) and the chunk count it declares.
 fn header_text(exrheader: &Path, path: &Path) -> String {
     let out = Command::new(exrheader).arg(path).output().unwrap();
     assert!(
@@ -17,24 +18,28 @@ fn header_text(exrheader: &Path, path: &Path) -> String {
         "exrheader cannot read {}",
         path.display()
     );
+    let mut in_history = false;
     String::from_utf8_lossy(&out.stdout)
         .lines()
         .filter(|l| {
-            !l.starts_with("file ") && !l.starts_with("software ") && !l.starts_with("chunkCount ")
+            in_history |= l.starts_with("Exif:ImageHistory ");
+            let owned = in_history
+                || ["file ", "Software ", "chunkCount "]
+                    .iter()
+                    .any(|p| l.starts_with(p));
+            in_history &= !l.ends_with('"');
+            !owned
         })
         .collect::<Vec<_>>()
         .join("\n")
 }
 
-#[test]
-fn every_attribute_survives_and_runs_write_identical_bytes() {
-    let (Some(exrheader), Some(exrstdattr), Some(oiiotool)) =
-        (peer("exrheader"), peer("exrstdattr"), peer("oiiotool"))
-    else {
-        return;
+/// `d/in.exr`, holding every standard attribute exrstdattr sets and custom
+/// ones of many types; `None` without the peer tools that make it.
+fn every_attribute_input(d: &Path) -> Option<PathBuf> {
+    let (Some(exrstdattr), Some(oiiotool)) = (peer("exrstdattr"), peer("oiiotool")) else {
+        return None;
     };
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
     generate(&d.join("plain.exr"), "bg", (40, 36), &[]);
     // Custom attributes of many types, as oiiotool and Nuke write them.
     let out = Command::new(oiiotool)
@@ -116,6 +121,16 @@ fn every_attribute_survives_and_runs_write_identical_bytes() {
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", stderr(&out));
+    Some(input)
+}
+
+#[test]
+fn every_attribute_survives_and_runs_write_identical_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (Some(exrheader), Some(input)) = (peer("exrheader"), every_attribute_input(d)) else {
+        return;
+    };
     let expected = header_text(&exrheader, &input);
     assert!(expected.contains("keyCode") && expected.contains("studio:m44"));
     let outputs: Vec<Vec<u8>> = (0..3)
@@ -134,4 +149,293 @@ fn every_attribute_survives_and_runs_write_identical_bytes() {
     let out = run(&["over", s(&input), s(&input), "-o", s(&output), "-q"]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert_eq!(header_text(&exrheader, &output), expected);
+}
+
+/// `bytes` of a single-part file with attribute `name` of type `kind`
+/// holding `value(old value)`; the chunk offsets move with the header.
+fn retyped(bytes: &[u8], name: &str, kind: &str, value: impl Fn(&[u8]) -> Vec<u8>) -> Vec<u8> {
+    let text_end = |from: usize| from + bytes[from..].iter().position(|&b| b == 0).unwrap();
+    let mut out = bytes[..8].to_vec();
+    let mut at = 8;
+    while bytes[at] != 0 {
+        let name_end = text_end(at);
+        let kind_end = text_end(name_end + 1);
+        let size = i32::from_le_bytes(bytes[kind_end + 1..kind_end + 5].try_into().unwrap());
+        let end = kind_end + 5 + size as usize;
+        if &bytes[at..name_end] == name.as_bytes() {
+            let new = value(&bytes[kind_end + 5..end]);
+            for text in [name, kind] {
+                out.extend_from_slice(text.as_bytes());
+                out.push(0);
+            }
+            out.extend_from_slice(&(new.len() as i32).to_le_bytes());
+            out.extend_from_slice(&new);
+        } else {
+            out.extend_from_slice(&bytes[at..end]);
+        }
+        at = end;
+    }
+    out.push(0);
+    let table = at + 1;
+    let moved = out.len() as i64 - table as i64;
+    let first = u64::from_le_bytes(bytes[table..table + 8].try_into().unwrap()) as usize;
+    for entry in bytes[table..first].chunks_exact(8) {
+        let offset = u64::from_le_bytes(entry.try_into().unwrap()) as i64 + moved;
+        out.extend_from_slice(&(offset as u64).to_le_bytes());
+    }
+    out.extend_from_slice(&bytes[first..]);
+    out
+}
+
+#[test]
+fn mistyped_standard_attributes_are_refused_as_openexr_refuses_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let plain = d.join("plain.exr");
+    generate(&plain, "bg", (16, 12), &[]);
+    let bytes = std::fs::read(&plain).unwrap();
+    // The file is sound before it is patched.
+    let same = d.join("same.exr");
+    std::fs::write(
+        &same,
+        retyped(&bytes, "lineOrder", "lineOrder", <[u8]>::to_vec),
+    )
+    .unwrap();
+    assert!(run(&["info", s(&same)]).status.success());
+    // Attribute, type written, type OpenEXR requires, value from the old one.
+    type Case = (
+        &'static str,
+        &'static str,
+        &'static str,
+        fn(&[u8]) -> Vec<u8>,
+    );
+    let cases: [Case; 5] = [
+        ("lineOrder", "int", "lineOrder", |old| vec![old[0], 0, 0, 0]),
+        ("dataWindow", "v2i", "box2i", |old| old.to_vec()),
+        ("compression", "int", "compression", |old| {
+            vec![old[0], 0, 0, 0]
+        }),
+        ("pixelAspectRatio", "double", "float", |_| {
+            1f64.to_le_bytes().to_vec()
+        }),
+        ("channels", "string", "chlist", |old| old.to_vec()),
+    ];
+    for (name, kind, wanted, value) in cases {
+        let path = d.join(format!("{name}.exr"));
+        std::fs::write(&path, retyped(&bytes, name, kind, value)).unwrap();
+        if let Some(exrheader) = peer("exrheader") {
+            let out = Command::new(exrheader).arg(&path).output().unwrap();
+            assert!(!out.status.success(), "OpenEXR reads {name} as {kind}");
+        }
+        let expected =
+            format!("attribute '{name}' has type '{kind}' where OpenEXR requires '{wanted}'");
+        for command in [
+            vec!["info", s(&path)],
+            vec!["transcode", s(&path), "-o", s(&d.join("out.exr")), "-q"],
+        ] {
+            let out = run(&command);
+            assert_eq!(out.status.code(), Some(3), "{command:?}: {}", stderr(&out));
+            assert!(
+                stderr(&out).contains(&expected),
+                "{command:?}: {}",
+                stderr(&out)
+            );
+        }
+    }
+}
+
+/// The string attribute `name` of `path`'s first part, if it has one.
+fn string_attribute(path: &Path, name: &str) -> Option<String> {
+    let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+    let value = meta.headers[0]
+        .all_named_attributes()
+        .find(|(n, _)| *n == name.as_bytes())
+        .map(|(_, value)| match value {
+            exr::meta::attribute::AttributeValue::Text(text) => text.to_string(),
+            other => panic!("{name} is {other:?}"),
+        });
+    value
+}
+
+#[test]
+fn outputs_say_who_wrote_them_and_keep_the_history_of_their_input() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let ours = concat!("exrcomp ", env!("CARGO_PKG_VERSION"));
+    // oiiotool's convention: `Software` names the writer, `Exif:ImageHistory`
+    // collects one line per step.
+    let input = d.join("in.exr");
+    let made = Command::new(&oiiotool)
+        .args([
+            "--pattern",
+            "constant:color=0.5,0.2,0.1,1",
+            "32x24",
+            "4",
+            "-o",
+        ])
+        .arg(&input)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    let history = string_attribute(&input, "Exif:ImageHistory").unwrap();
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(string_attribute(&output, "Software").as_deref(), Some(ours));
+    assert_eq!(string_attribute(&output, "software"), None);
+    assert_eq!(
+        string_attribute(&output, "Exif:ImageHistory"),
+        Some(format!("{history}\n{ours}"))
+    );
+    // Without a history, the input's writer starts it.
+    let plain = d.join("plain.exr");
+    let made = Command::new(&oiiotool)
+        .arg(&input)
+        .args(["--nosoftwareattrib", "--eraseattrib", "Exif:ImageHistory"])
+        .args(["--attrib", "Software", "Renderer 7", "-o"])
+        .arg(&plain)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    assert_eq!(string_attribute(&plain, "Exif:ImageHistory"), None);
+    let out = run(&["transcode", s(&plain), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        string_attribute(&output, "Exif:ImageHistory"),
+        Some(format!("Renderer 7\n{ours}"))
+    );
+    assert_peers_read(&output);
+}
+
+#[test]
+fn a_preview_of_the_input_is_dropped() {
+    use exr::prelude::*;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in.exr");
+    let pixels = SpecificChannels::rgba(|_: Vec2<usize>| (0.5f32, 0.25f32, 0.125f32, 1.0f32));
+    let preview = exr::meta::attribute::Preview {
+        size: Vec2(2, 2),
+        pixel_data: vec![255; 16].into_iter().map(|b: u8| b as i8).collect(),
+    };
+    let attributes = LayerAttributes {
+        preview: Some(preview),
+        ..LayerAttributes::named("rgba")
+    };
+    Image::from_layer(Layer::new(
+        (8, 6),
+        attributes,
+        Encoding {
+            compression: Compression::ZIP16,
+            blocks: Blocks::ScanLines,
+            line_order: LineOrder::Increasing,
+        },
+        pixels,
+    ))
+    .write()
+    .to_file(&input)
+    .unwrap();
+    let has_preview = |path: &Path| {
+        let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+        meta.headers[0].own_attributes.preview.is_some()
+    };
+    assert!(has_preview(&input));
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!has_preview(&output));
+}
+
+/// `exrcomp info`'s text of `path`, less its first line (the file, which
+/// exrheader names without the size) and its chunk checks (`pixels:`).
+fn info_text(path: &Path) -> String {
+    let out = run(&["info", s(path)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| !l.starts_with("file ") && !l.starts_with("pixels: "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// exrheader's text of `path` less its first line.
+fn exrheader_text(exrheader: &Path, path: &Path) -> String {
+    let out = Command::new(exrheader).arg(path).output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| !l.starts_with("file "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn info_prints_what_exrheader_prints() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (Some(exrheader), Some(input)) = (peer("exrheader"), every_attribute_input(d)) else {
+        return;
+    };
+    // Every attribute type, in a file of ours (which declares its chunkCount
+    // and type), in a multi-part file of the exr crate's, and tiled.
+    let output = d.join("out.exr");
+    let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let parts = d.join("parts.exr");
+    let img = random_rgba(71, 2, 3, 12, 10, Kind::Float, true);
+    write_parts(&parts, &[("rgba", "left", &img), ("other", "right", &img)]);
+    let tiled = d.join("tiled.exr");
+    if let Some(oiiotool) = peer("oiiotool") {
+        let out = Command::new(oiiotool)
+            .arg(&output)
+            .args(["--tile", "16", "16", "-o"])
+            .arg(&tiled)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", stderr(&out));
+    }
+    for path in [&output, &parts, &tiled] {
+        if path.exists() {
+            assert_eq!(
+                info_text(path),
+                exrheader_text(&exrheader, path),
+                "{}",
+                path.display()
+            );
+        }
+    }
+    let text = String::from_utf8_lossy(&run(&["info", s(&parts)]).stdout).into_owned();
+    assert!(text.contains(" part 1:\n"), "{text}");
+    assert!(text.contains("pixels: all 1 chunks decode"), "{text}");
+}
+
+#[test]
+fn info_json_gives_the_same_facts_per_part() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let parts = d.join("parts.exr");
+    let img = random_rgba(72, 2, 3, 12, 40, Kind::Half, false);
+    write_parts(&parts, &[("rgba", "left", &img), ("other", "right", &img)]);
+    let out = run(&["info", "--json", s(&parts)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let facts: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(facts["file"], s(&parts));
+    assert_eq!(facts["flags"], 0x1000);
+    let part = &facts["parts"][1];
+    assert_eq!(part["chunks"], 3);
+    assert_eq!(part["checked"], "all 3 chunks decode");
+    let attributes = &part["attributes"];
+    assert_eq!(
+        attributes["dataWindow"],
+        serde_json::json!({"type": "box2i", "value": {"min": [2, 3], "max": [13, 42]}})
+    );
+    assert_eq!(attributes["compression"]["value"], "zip");
+    assert_eq!(attributes["view"]["value"], "right");
+    assert_eq!(
+        attributes["channels"]["value"][1],
+        serde_json::json!({"name": "B", "type": "half", "sampling": [1, 1], "plinear": false})
+    );
 }

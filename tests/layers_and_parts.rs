@@ -272,3 +272,95 @@ fn data_windows_follow_each_operator_rule_on_the_display_window_files() {
         assert_eq!(display_window(&path), display_window(&b_path), "{op}");
     }
 }
+
+/// Runs `over` of `input` over itself with `args`; its exit code and stderr.
+fn over_itself(input: &str, output: &Path, args: &[&str]) -> (Option<i32>, String) {
+    let mut command = vec!["over", input, input, "-o", s(output), "-q"];
+    command.extend_from_slice(args);
+    let out = run(&command);
+    (out.status.code(), stderr(&out))
+}
+
+#[test]
+fn unknown_views_and_parts_are_input_errors_listing_those_that_exist() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let out = d.join("out.exr");
+    // Single-part stereo: left (the default view) unprefixed, right as right.*.
+    let mut img = random_rgba(61, 0, 0, 16, 12, Kind::Half, false);
+    let right = random_rgba(62, 0, 0, 16, 12, Kind::Half, false);
+    for (name, samples) in right.channels.clone() {
+        img.channels.insert(format!("right.{name}"), samples);
+    }
+    let stereo = d.join("stereo.exr");
+    write_multi_view(&stereo, &img, &["left", "right"]);
+    let stereo = s(&stereo);
+    for view in ["left", "right"] {
+        let (code, message) = over_itself(stereo, &out, &["--view", view]);
+        assert_eq!(code, Some(0), "{view}: {message}");
+    }
+    let (code, message) = over_itself(stereo, &out, &["--view", "centre"]);
+    assert_eq!(code, Some(3), "{message}");
+    assert!(
+        message.contains(&format!("{stereo}: no view 'centre' (views: left, right)")),
+        "{message}"
+    );
+    let (code, message) = over_itself(stereo, &out, &["--view", "rihgt"]);
+    assert_eq!(code, Some(3), "{message}");
+    assert!(message.contains("did you mean 'right'?"), "{message}");
+
+    // Multi-part stereo: one part per view.
+    let parts = d.join("parts.exr");
+    let left = random_rgba(63, 0, 0, 16, 12, Kind::Half, false);
+    write_parts(
+        &parts,
+        &[("rgba", "left", &left), ("rgba_right", "right", &right)],
+    );
+    let parts = s(&parts);
+    let (code, message) = over_itself(parts, &out, &["--view", "centre"]);
+    assert_eq!(code, Some(3), "{message}");
+    assert!(
+        message.contains(&format!("{parts}: no view 'centre' (views: left, right)")),
+        "{message}"
+    );
+    // Parts by name or index, from the file name, --part or a job file.
+    let (code, message) = over_itself(parts, &out, &["--part", "rgba_rihgt"]);
+    assert_eq!(code, Some(3), "{message}");
+    assert!(
+        message.contains(
+            "no part 'rgba_rihgt' (parts: 0 (rgba), 1 (rgba_right)); did you mean 'rgba_right'?"
+        ),
+        "{message}"
+    );
+    let (code, message) = over_itself(&format!("{parts}:2"), &out, &[]);
+    assert_eq!(code, Some(3), "{message}");
+    assert!(
+        message.contains("no part '2' (parts: 0 (rgba), 1 (rgba_right))"),
+        "{message}"
+    );
+    let job = d.join("job.toml");
+    std::fs::write(
+        &job,
+        "[[node]]\nname = \"in\"\nread = \"parts.exr\"\npart = \"beauty\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"out.exr\"\ninputs = [\"in\"]\n",
+    )
+    .unwrap();
+    let ran = run(&["run", s(&job), "-q"]);
+    assert_eq!(ran.status.code(), Some(3), "{}", stderr(&ran));
+    assert!(
+        stderr(&ran).contains("no part 'beauty' (parts: 0 (rgba), 1 (rgba_right))"),
+        "{}",
+        stderr(&ran)
+    );
+
+    // A file without views is the same in every view.
+    let mono = d.join("mono.exr");
+    write_image(
+        &mono,
+        &left,
+        exr::prelude::Compression::ZIP16,
+        exr::prelude::LineOrder::Increasing,
+    );
+    let (code, message) = over_itself(s(&mono), &out, &["--view", "left"]);
+    assert_eq!(code, Some(0), "{message}");
+}

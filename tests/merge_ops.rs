@@ -312,10 +312,12 @@ fn output_keeps_b_header_attributes_and_names_exrcomp_as_software() {
         attrs.comments.as_ref().map(|c| c.to_string()).as_deref(),
         Some("written by the tests")
     );
-    let software = attrs
-        .software_name
-        .as_ref()
-        .map(|t| t.to_string())
-        .unwrap_or_default();
-    assert!(software.starts_with("exrcomp "), "software: {software}");
+    let software = match attrs
+        .other
+        .get(&exr::meta::attribute::Text::from("Software"))
+    {
+        Some(exr::meta::attribute::AttributeValue::Text(t)) => t.to_string(),
+        other => panic!("Software: {other:?}"),
+    };
+    assert!(software.starts_with("exrcomp "), "Software: {software}");
 }

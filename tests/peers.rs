@@ -126,3 +126,72 @@ fn transcoding_real_photographs_is_lossless_and_readable() {
         }
     }
 }
+
+#[test]
+fn a_higher_dwa_level_writes_smaller_files_that_record_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in.exr");
+    generate(&input, "bg", (256, 192), &[]);
+    let level = |path: &Path| {
+        let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+        match meta.headers[0].compression {
+            exr::prelude::Compression::DWAA(level) | exr::prelude::Compression::DWAB(level) => {
+                level
+            }
+            other => panic!("{other:?}"),
+        }
+    };
+    for compression in ["dwaa", "dwab"] {
+        let sizes: Vec<u64> = ["5", "45", "500"]
+            .iter()
+            .map(|n| {
+                let out = d.join(format!("{compression}-{n}.exr"));
+                let result = run(&[
+                    "transcode",
+                    s(&input),
+                    "-o",
+                    s(&out),
+                    "--compression",
+                    compression,
+                    "--dwa-level",
+                    n,
+                    "-q",
+                ]);
+                assert!(result.status.success(), "{}", stderr(&result));
+                assert_eq!(level(&out), Some(n.parse().unwrap()));
+                assert_peers_read(&out);
+                std::fs::metadata(&out).unwrap().len()
+            })
+            .collect();
+        assert!(
+            sizes[0] > sizes[1] && sizes[1] > sizes[2],
+            "{compression}: {sizes:?}"
+        );
+    }
+    let out = d.join("x.exr");
+    for (args, message) in [
+        (
+            vec!["--compression", "dwaa", "--dwa-level=-1"],
+            "dwa_level must be a number from 0 to",
+        ),
+        (
+            vec!["--compression", "dwaa", "--dwa-level", "nan"],
+            "dwa_level must be a number from 0 to",
+        ),
+        (
+            vec!["--compression", "zip", "--dwa-level", "45"],
+            "--dwa-level applies to dwaa and dwab",
+        ),
+    ] {
+        let mut command = vec!["transcode", s(&input), "-o", s(&out)];
+        command.extend_from_slice(&args);
+        let result = run(&command);
+        assert_eq!(result.status.code(), Some(2), "{args:?}");
+        assert!(
+            stderr(&result).contains(message),
+            "{args:?}: {}",
+            stderr(&result)
+        );
+    }
+}

@@ -41,7 +41,7 @@ fn info_reads_every_good_file() {
         let text = String::from_utf8_lossy(&out.stdout);
         assert!(out.status.success(), "{}: {}", path.display(), stderr(&out));
         assert!(
-            text.contains("data window:") && text.contains("channels ("),
+            text.contains("dataWindow (type box2i): (") && text.contains("channels (type chlist):"),
             "{text}"
         );
         assert!(

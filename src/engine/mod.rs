@@ -10,5 +10,6 @@ pub mod passthrough;
 pub mod pipeline;
 pub mod plan;
 pub mod prepass;
+pub mod provenance;
 pub mod sources;
 pub mod strip;

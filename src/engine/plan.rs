@@ -258,8 +258,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;
-    header.own_attributes.software_name =
-        Some(Text::from(concat!("exrcomp ", env!("CARGO_PKG_VERSION"))));
+    super::provenance::stamp(&mut header);
     if let Some(compression) = job.compression {
         header.compression = compression;
     }

@@ -6,6 +6,7 @@ pub mod overwrite;
 pub mod parts;
 pub mod reader;
 pub mod sequence;
+pub mod standard_attributes;
 pub mod stitch;
 pub mod writer;
 pub mod zip;

@@ -110,7 +110,9 @@ impl ExrFile {
             .map_err(|e| err(format!("cannot open: {e}")))?
             .len();
 
-        let mut reader = BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
+        let header = || BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
+        super::standard_attributes::check(&mut header()).map_err(err)?;
+        let mut reader = header();
         let meta = catch_panic(|| MetaData::read_from_buffered(&mut reader, false))
             .map_err(|p| err(format!("not a readable EXR header (decoder panic: {p})")))?
             .map_err(|e| err(format!("not a readable EXR header: {e}")))?;

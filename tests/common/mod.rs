@@ -388,13 +388,31 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
     image.write().to_file(path).expect("test image written");
 }
 
-/// A multi-part file: per part its name, its view and its pixels (ZIP).
-pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
-    let zip = Encoding {
+fn zip_scanlines() -> Encoding {
+    Encoding {
         compression: Compression::ZIP16,
         blocks: Blocks::ScanLines,
         line_order: LineOrder::Increasing,
+    }
+}
+
+/// A single-part multi-view file: `img`'s channels under a `multiView`
+/// attribute listing `views`, the first of them the default view (ZIP).
+pub fn write_multi_view(path: &Path, img: &Img, views: &[&str]) {
+    let attributes = LayerAttributes {
+        multi_view_names: Some(views.iter().map(|&v| v.into()).collect()),
+        ..Default::default()
     };
+    let layer = layer(img, attributes, zip_scanlines());
+    Image::from_layer(layer)
+        .write()
+        .to_file(path)
+        .expect("test image written");
+}
+
+/// A multi-part file: per part its name, its view and its pixels (ZIP).
+pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
+    let zip = zip_scanlines();
     let parts: Vec<_> = parts.iter().map(|&(n, v, img)| (n, v, img, zip)).collect();
     write_encoded_parts(path, &parts);
 }
