@@ -445,6 +445,7 @@ fn input_job(
         inputs,
         parts,
         view: layers.view.clone(),
+        level: layers.level,
         output,
         frames: resolved.frames,
         graph,
@@ -482,6 +483,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         merged: Vec::new(),
         parts: Vec::new(),
         view: None,
+        level: None,
         output,
         frames: frames
             .into_iter()

@@ -7,5 +7,6 @@ pub mod parts;
 pub mod reader;
 pub mod sequence;
 pub mod stitch;
+pub mod tiles;
 pub mod writer;
 pub mod zip;
