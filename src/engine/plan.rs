@@ -333,19 +333,13 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     })
 }
 
-/// The level each input reads: `job.level` for those with levels (mipmaps
-/// and ripmaps), level 0 of the others; a level asked that no input has is
-/// an error.
+/// The level each input reads (`input_level`); a level asked that no input
+/// has is an error.
 fn read_levels(job: &Job, inputs: &[Arc<ExrFile>], parts: &[usize]) -> Result<Vec<Level>> {
     let levels = inputs
         .iter()
         .zip(parts)
-        .map(|(file, &part)| {
-            let header = file.header(part);
-            let layered = tiles::levels(header).len() > 1;
-            tiles::level(header, job.level.filter(|_| layered))
-                .map_err(|m| file.error(format!("--level: {m}")))
-        })
+        .map(|(file, &part)| input_level(job, file, part))
         .collect::<Result<Vec<Level>>>()?;
     if let Some(asked) = job.level.filter(|&l| l != Vec2(0, 0)) {
         if !levels.iter().any(|l| l.index == asked) {
@@ -356,6 +350,15 @@ fn read_levels(job: &Job, inputs: &[Arc<ExrFile>], parts: &[usize]) -> Result<Ve
         }
     }
     Ok(levels)
+}
+
+/// The level of `part` of `file` read: `job.level` if it has levels
+/// (mipmaps and ripmaps), else its only one.
+pub fn input_level(job: &Job, file: &ExrFile, part: usize) -> Result<Level> {
+    let header = file.header(part);
+    let layered = tiles::levels(header).len() > 1;
+    tiles::level(header, job.level.filter(|_| layered))
+        .map_err(|m| file.error(format!("--level: {m}")))
 }
 
 /// Narrows `header` to the band of rows `y0..y1` (on its block grid) and
