@@ -272,6 +272,10 @@ pub enum Command {
         input: String,
         #[arg(short, long)]
         output: String,
+        /// Level of a mipmapped input (N), or a ripmapped one (X,Y), to
+        /// write instead of the full resolution (level 0).
+        #[arg(long, value_parser = parse_level)]
+        level: Option<exr::math::Vec2<usize>>,
         #[command(flatten)]
         run: RunArgs,
     },

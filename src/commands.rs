@@ -302,10 +302,18 @@ pub fn run(command: Command) -> Result<()> {
                 .collect::<Result<_>>()?;
             run_job(&job, "deepmerge", &run, summary)
         }
-        Command::Transcode { input, output, run } => {
+        Command::Transcode {
+            input,
+            output,
+            level,
+            run,
+        } => {
             let graph = Graph::chain(1, Vec::new());
-            let (job, summary) =
-                input_job(&[input], &output, graph, 0, &LayerArgs::default(), &run)?;
+            let layers = LayerArgs {
+                level,
+                ..LayerArgs::default()
+            };
+            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
             run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files } => info(&files),
