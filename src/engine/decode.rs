@@ -17,6 +17,9 @@ use std::mem::MaybeUninit;
 use std::ops::Range;
 use std::sync::Arc;
 
+/// A chunk's rows in each plane of a strip, to be written.
+type ChunkRows<'a> = Vec<&'a mut [MaybeUninit<u8>]>;
+
 /// Reads one input of a frame, strip after strip, top to bottom.
 pub struct InputCursor {
     pub file: Arc<ExrFile>,
@@ -230,7 +233,7 @@ impl InputCursor {
             .map(|c| Samples::with_capacity(c.sample_type, width * height))
             .collect();
         // Per chunk, its rows of every plane.
-        let mut tasks: Vec<(usize, usize, Vec<&mut [MaybeUninit<u8>]>)> = self
+        let mut tasks: Vec<(usize, usize, ChunkRows)> = self
             .chunks_for(columns, rows)
             .into_iter()
             .enumerate()

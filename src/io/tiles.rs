@@ -50,21 +50,17 @@ impl Level {
 /// then of y level 1...
 pub fn levels(header: &Header) -> Vec<Level> {
     let size = header.layer_size;
-    let (block, indices): (Vec2<usize>, Vec<(Vec2<usize>, Vec2<usize>)>) = match header.blocks {
-        BlockDescription::ScanLines => (
-            Vec2(size.width(), header.compression.scan_lines_per_block()),
-            vec![(Vec2(0, 0), size)],
-        ),
-        BlockDescription::Tiles(tiles) => (
-            tiles.tile_size,
-            match tiles.level_mode {
-                LevelMode::Singular => vec![(Vec2(0, 0), size)],
-                LevelMode::MipMap => mip_map_levels(tiles.rounding_mode, size)
-                    .map(|(n, size)| (Vec2(n, n), size))
-                    .collect(),
-                LevelMode::RipMap => rip_map_levels(tiles.rounding_mode, size).collect(),
-            },
-        ),
+    let block = header.max_block_pixel_size();
+    let indices: Vec<(Vec2<usize>, Vec2<usize>)> = match header.blocks {
+        BlockDescription::Tiles(tiles) if tiles.level_mode == LevelMode::MipMap => {
+            mip_map_levels(tiles.rounding_mode, size)
+                .map(|(n, size)| (Vec2(n, n), size))
+                .collect()
+        }
+        BlockDescription::Tiles(tiles) if tiles.level_mode == LevelMode::RipMap => {
+            rip_map_levels(tiles.rounding_mode, size).collect()
+        }
+        _ => vec![(Vec2(0, 0), size)],
     };
     let mut first = 0;
     indices
@@ -130,7 +126,8 @@ pub fn block_at(header: &Header, index: usize) -> Option<TileCoordinates> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use exr::meta::attribute::{RoundingMode, TileDescription};
+    use exr::math::RoundingMode;
+    use exr::meta::attribute::TileDescription;
     use exr::prelude::Compression;
 
     fn tiled(size: (usize, usize), tile: usize, mode: LevelMode, round: RoundingMode) -> Header {
