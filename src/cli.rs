@@ -282,6 +282,10 @@ pub enum Command {
         input: String,
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
+        /// Level of a mipmapped input (N), or a ripmapped one (X,Y), to
+        /// write instead of the full resolution (level 0).
+        #[arg(long, value_parser = parse_level)]
+        level: Option<exr::math::Vec2<usize>>,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -422,6 +426,10 @@ pub struct LayerArgs {
     /// Part (name or index) of inputs given without `:PART`.
     #[arg(long)]
     pub part: Option<String>,
+    /// Level of mipmapped inputs (N), or ripmapped ones (X,Y; N is N,N) to
+    /// read instead of the full resolution (level 0).
+    #[arg(long, value_parser = parse_level)]
+    pub level: Option<exr::math::Vec2<usize>>,
 }
 
 /// Options every job that writes files takes.
@@ -501,6 +509,18 @@ fn parse_rows(text: &str) -> Result<(i32, i32), String> {
         a.trim().parse().map_err(|_| bad())?,
         b.trim().parse().map_err(|_| bad())?,
     ))
+}
+
+fn parse_level(text: &str) -> Result<exr::math::Vec2<usize>, String> {
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .map_err(|_| "expected N (a mipmap level) or X,Y (a ripmap level)".to_string())
+    };
+    match text.split_once(',') {
+        Some((x, y)) => Ok(exr::math::Vec2(number(x)?, number(y)?)),
+        None => number(text).map(|n| exr::math::Vec2(n, n)),
+    }
 }
 
 fn parse_pair(text: &str) -> Result<(String, String), String> {

@@ -311,10 +311,18 @@ pub fn run(command: Command) -> Result<()> {
                 .collect::<Result<_>>()?;
             run_job(&job, "deepmerge", &run, summary)
         }
-        Command::Transcode { input, output, run } => {
+        Command::Transcode {
+            input,
+            output,
+            level,
+            run,
+        } => {
             let graph = Graph::chain(1, Vec::new());
-            let (job, summary) =
-                input_job(&[input], &output, graph, 0, &LayerArgs::default(), &run)?;
+            let layers = LayerArgs {
+                level,
+                ..LayerArgs::default()
+            };
+            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
             run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files, json } => info(&files, json),
@@ -454,6 +462,7 @@ fn input_job(
         inputs,
         parts,
         view: layers.view.clone(),
+        level: layers.level,
         output,
         frames: resolved.frames,
         graph,
@@ -491,6 +500,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         merged: Vec::new(),
         parts: Vec::new(),
         view: None,
+        level: None,
         output,
         frames: frames
             .into_iter()

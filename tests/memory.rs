@@ -115,3 +115,50 @@ fn stack_peak_memory_does_not_grow_with_frames() {
         "4-layer stack: 2 frames {few} B, 12 frames {many} B"
     );
 }
+
+/// `dir/NAME.0001.exr` of `kind` in 64x64 half tiles (oiiotool converts a
+/// generated plate); false when oiiotool is missing.
+fn generate_tiled(dir: &Path, name: &str, kind: &str, width: usize, height: usize) -> bool {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return false;
+    };
+    let plate = dir.join(format!("{name}-scanlines.exr"));
+    generate(&plate, kind, (width, height), &[]);
+    let out = std::process::Command::new(oiiotool)
+        .arg(&plate)
+        .args(["-d", "half", "--tile", "64", "64", "-o"])
+        .arg(dir.join(format!("{name}.0001.exr")))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_file(plate).unwrap();
+    true
+}
+
+#[test]
+fn tiled_peak_memory_does_not_grow_with_height() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, kind, height) in [
+        ("fs", "fg", 4096),
+        ("bs", "bg", 4096),
+        ("ft", "fg", 32768),
+        ("bt", "bg", 32768),
+    ] {
+        if !generate_tiled(d, name, kind, 2048, height) {
+            return;
+        }
+    }
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let short = peak_over_runs(d, "fs.####.exr", "bs.####.exr", "1", 3, true);
+    let tall = peak_over_runs(d, "ft.####.exr", "bt.####.exr", "1", 2, false);
+    // 8 times the rows (a 512 MiB frame of raw half channels per input).
+    assert!(
+        tall as f64 <= short as f64 * 1.25,
+        "2048x4096 tiled {short} B, 2048x32768 tiled {tall} B"
+    );
+}

@@ -1,11 +1,14 @@
 //! Turns an input file's chunks into strips of rows in the output's columns:
 //! chunks are read and decompressed in parallel, each exactly once, and
-//! their buffers freed as soon as the rows are copied out.
+//! their buffers freed as soon as the rows are copied out. Scanline blocks
+//! and the tiles of one level of a tiled part are read alike: the blocks of
+//! the block rows overlapping a strip (`tiles::Level`).
 
 use super::deep_input::DeepInput;
 use super::strip::{Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
+use crate::io::tiles::{self, Level};
 use exr::block::UncompressedBlock;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
@@ -14,55 +17,63 @@ use std::mem::MaybeUninit;
 use std::ops::Range;
 use std::sync::Arc;
 
+/// A chunk's rows in each plane of a strip, to be written.
+type ChunkRows<'a> = Vec<&'a mut [MaybeUninit<u8>]>;
+
 /// Reads one input of a frame, strip after strip, top to bottom.
 pub struct InputCursor {
     pub file: Arc<ExrFile>,
     pub part: usize,
-    /// The data window read from: empty for a black input.
+    /// The data window read from (the level's): empty for a black input.
     window: IntegerBounds,
-    /// The last decoded chunk, kept when it reaches into the next strip.
-    carried: Option<(usize, UncompressedBlock)>,
+    /// The level read and where its blocks are.
+    level: Level,
+    /// The decoded chunks of the last block row, kept when it reaches into
+    /// the next strip.
+    carried: Vec<(usize, UncompressedBlock)>,
     /// Set for a deep input: strips come from flattening its samples.
     deep: Option<Arc<DeepInput>>,
 }
 
 impl InputCursor {
-    /// `window`: the file's data window, or an empty one to read nothing.
-    pub fn new(file: Arc<ExrFile>, part: usize, window: IntegerBounds) -> Self {
+    /// Reads `level` of `part`; `window`: the level's data window, or an
+    /// empty one to read nothing.
+    pub fn new(file: Arc<ExrFile>, part: usize, level: Level, window: IntegerBounds) -> Self {
         InputCursor {
             file,
             part,
             window,
-            carried: None,
+            level,
+            carried: Vec::new(),
             deep: None,
         }
     }
 
     /// A cursor that flattens a deep input (and reads nothing flat).
     pub fn deep(file: Arc<ExrFile>, part: usize, deep: Arc<DeepInput>) -> Self {
+        let level = tiles::levels(file.header(part))[0];
         InputCursor {
             deep: Some(deep),
-            ..Self::new(file, part, IntegerBounds::zero())
+            ..Self::new(file, part, level, IntegerBounds::zero())
         }
     }
 
-    fn lines_per_chunk(&self) -> usize {
-        self.file
-            .header(self.part)
-            .compression
-            .scan_lines_per_block()
-    }
-
-    /// Chunk indices holding rows `rows` (absolute), clipped to the data window.
-    fn chunks_for(&self, rows: &Range<i32>) -> Range<usize> {
-        let w = self.window;
-        let (top, bottom) = (w.position.y(), w.end().y());
-        let (start, end) = (rows.start.max(top), rows.end.min(bottom));
-        if start >= end {
-            return 0..0;
+    /// Chunk indices holding rows `rows` and `columns` (absolute) of the
+    /// data window, block row after block row, left to right.
+    fn chunks_for(&self, columns: (i32, usize), rows: &Range<i32>) -> Vec<usize> {
+        let (w, level) = (self.window, self.level);
+        let (top, bottom) = (rows.start.max(w.position.y()), rows.end.min(w.end().y()));
+        let right = columns.0 + columns.1 as i32;
+        let (left, right) = (columns.0.max(w.position.x()), right.min(w.end().x()));
+        if top >= bottom || left >= right {
+            return Vec::new();
         }
-        let lines = self.lines_per_chunk();
-        (start - top) as usize / lines..(end - 1 - top) as usize / lines + 1
+        let block = |at: i32, origin: i32, size: usize| (at - origin) as usize / size;
+        let (x, y) = (w.position.x(), w.position.y());
+        let across = block(left, x, level.block.x())..=block(right - 1, x, level.block.x());
+        (block(top, y, level.block.y())..=block(bottom - 1, y, level.block.y()))
+            .flat_map(|row| across.clone().map(move |column| level.chunk(column, row)))
+            .collect()
     }
 }
 
@@ -94,7 +105,11 @@ pub fn decode_strip(
         .iter()
         .enumerate()
         .map(|(i, input)| {
-            input.direct(columns, &rows) && !input.chunks_for(&rows).any(|k| skip(i, k))
+            input.direct(columns, &rows)
+                && !input
+                    .chunks_for(columns, &rows)
+                    .into_iter()
+                    .any(|k| skip(i, k))
         })
         .collect();
     let jobs: Vec<(usize, usize)> = inputs
@@ -102,10 +117,10 @@ pub fn decode_strip(
         .enumerate()
         .filter(|(i, _)| selected(*i) && !direct[*i])
         .flat_map(|(i, input)| {
-            let carried = input.carried.as_ref().map(|(k, _)| *k);
             input
-                .chunks_for(&rows)
-                .filter(move |&k| Some(k) != carried)
+                .chunks_for(columns, &rows)
+                .into_iter()
+                .filter(|&k| !input.carried.iter().any(|(c, _)| *c == k))
                 .map(move |k| (i, k))
         })
         .filter(|&(i, k)| !skip(i, k))
@@ -117,7 +132,7 @@ pub fn decode_strip(
 
     let mut blocks: Vec<Vec<(usize, UncompressedBlock)>> = inputs
         .iter_mut()
-        .map(|input| input.carried.take().into_iter().collect())
+        .map(|input| std::mem::take(&mut input.carried))
         .collect();
     for (i, k, block) in decoded {
         blocks[i].push((k, block));
@@ -136,7 +151,8 @@ pub fn decode_strip(
 
 impl InputCursor {
     /// The strip of rows `rows` from `blocks` (this input's decoded chunks,
-    /// taken); keeps the last one when it reaches into the next strip.
+    /// taken); keeps those of the last block row when it reaches into the
+    /// next strip.
     fn strip(
         &mut self,
         columns: (i32, usize),
@@ -159,28 +175,31 @@ impl InputCursor {
         for (_, block) in blocks.iter() {
             copy_block(block, window, &mut strip, rows);
         }
-        // The last chunk may hold rows of the next strip: keep it decoded.
-        let window_end = window.end().y();
-        if let Some(last) = blocks.drain(..).max_by_key(|(k, _)| *k) {
-            let block_end = window.position.y()
-                + (last.1.index.pixel_position.y() + last.1.index.pixel_size.y()) as i32;
-            if block_end > rows.end && rows.end < window_end {
-                self.carried = Some(last);
-            }
-        }
+        // The last block row may hold rows of the next strip: keep it decoded.
+        let reaches_on = |(_, block): &(usize, UncompressedBlock)| {
+            let index = block.index;
+            window.position.y() + (index.pixel_position.y() + index.pixel_size.y()) as i32
+                > rows.end
+        };
+        self.carried = match rows.end < window.end().y() {
+            true => blocks.drain(..).filter(reaches_on).collect(),
+            false => Vec::new(),
+        };
         Ok(strip)
     }
 
     /// Whether strip `rows` can be decoded straight into its planes: ZIP or
-    /// ZIPS chunks, none carried, that lie wholly inside the strip and cover
-    /// all its rows and columns (the usual case: the output's own grid).
+    /// ZIPS scanline chunks, none carried, that lie wholly inside the strip
+    /// and cover all its rows and columns (the usual case: the output's own
+    /// grid).
     fn direct(&self, columns: (i32, usize), rows: &Range<i32>) -> bool {
         let header = self.file.header(self.part);
         let w = self.window;
         let (top, bottom) = (w.position.y(), w.end().y());
         let lines = header.compression.scan_lines_per_block() as i32;
         self.deep.is_none()
-            && self.carried.is_none()
+            && self.carried.is_empty()
+            && !header.blocks.has_tiles()
             && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)
             && w.position.x() <= columns.0
             && w.end().x() >= columns.0 + columns.1 as i32
@@ -206,29 +225,32 @@ impl InputCursor {
         let line_bytes = header.channels.bytes_per_pixel * in_width;
         let skip = (columns.0 - self.window.position.x()) as usize;
         let lines = header.compression.scan_lines_per_block();
-        let chunks = self.chunks_for(rows);
-        // Chunk k starts `(k - first) * lines` rows into the strip.
+        // The strip's j-th chunk starts `j * lines` rows into it.
         let below = (self.window.end().y() - rows.start) as usize;
-        let chunk_lines = |k: usize| lines.min(below - (k - chunks.start) * lines);
+        let chunk_lines = |j: usize| lines.min(below - j * lines);
         let mut planes: Vec<Samples> = channels
             .iter()
             .map(|c| Samples::with_capacity(c.sample_type, width * height))
             .collect();
         // Per chunk, its rows of every plane.
-        let mut tasks: Vec<(usize, Vec<&mut [MaybeUninit<u8>]>)> =
-            chunks.clone().map(|k| (k, Vec::new())).collect();
+        let mut tasks: Vec<(usize, usize, ChunkRows)> = self
+            .chunks_for(columns, rows)
+            .into_iter()
+            .enumerate()
+            .map(|(j, k)| (j, k, Vec::new()))
+            .collect();
         for (plane, &size) in planes.iter_mut().zip(&sizes) {
             let mut rest = &mut plane.unset_bytes()[..width * height * size];
-            for (k, slices) in tasks.iter_mut() {
-                let (mine, after) = rest.split_at_mut(chunk_lines(*k) * width * size);
+            for (j, _, slices) in tasks.iter_mut() {
+                let (mine, after) = rest.split_at_mut(chunk_lines(*j) * width * size);
                 slices.push(mine);
                 rest = after;
             }
             assert!(rest.is_empty(), "the chunks cover the strip");
         }
-        tasks.into_par_iter().try_for_each(|(k, mut slices)| {
+        tasks.into_par_iter().try_for_each(|(j, k, mut slices)| {
             file.unpack_zip_chunk(part, k, |unpacked| {
-                for line in 0..chunk_lines(k) {
+                for line in 0..chunk_lines(j) {
                     let mut offset = line * line_bytes;
                     for (slice, &size) in slices.iter_mut().zip(&sizes) {
                         let row = width * size;

@@ -59,6 +59,7 @@ impl PassThrough {
         // The source is decoded after the inputs tested, so it is not one.
         let same = tests.iter().all(|&(_, first, _)| first != source)
             && plan.deep[source].is_none()
+            && !source_header.blocks.has_tiles()
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
             && source_header.compression == out.compression

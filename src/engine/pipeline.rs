@@ -133,7 +133,7 @@ fn decode_frame(
         .enumerate()
         .map(|(i, file)| match &plan.deep[i] {
             Some(deep) => InputCursor::deep(file.clone(), plan.parts[i], deep.clone()),
-            None => InputCursor::new(file.clone(), plan.parts[i], plan.windows[i]),
+            None => InputCursor::new(file.clone(), plan.parts[i], plan.levels[i], plan.windows[i]),
         })
         .collect();
     let window = plan.window();

@@ -7,7 +7,9 @@ use crate::error::{Error, Kind, Result};
 use crate::io::parts::choose_part;
 use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
+use crate::io::tiles::{self, Level};
 use crate::io::writer::Parts;
+use exr::math::Vec2;
 use exr::meta::attribute::Text;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
 use exr::meta::header::{Header, LayerAttributes};
@@ -34,6 +36,9 @@ pub struct Job {
     pub parts: Vec<Option<String>>,
     /// The view asked for: picks the part of that view in multi-part files.
     pub view: Option<String>,
+    /// The level read of mipmapped and ripmapped inputs (x, y; a mipmap's
+    /// level n is (n, n)); `None` reads level 0.
+    pub level: Option<Vec2<usize>>,
     /// Per input, more deep files whose samples merge with its own before
     /// they are flattened (`deepmerge`); empty for most.
     pub merged: Vec<Vec<FramePattern>>,
@@ -120,6 +125,8 @@ pub struct FramePlan {
     pub inputs: Vec<Arc<ExrFile>>,
     /// Per input, the part read.
     pub parts: Vec<usize>,
+    /// Per input, the level of that part read (a scanline part's only one).
+    pub levels: Vec<Level>,
     /// Per deep input, what flattens it as it is read.
     pub deep: Vec<Option<Arc<DeepInput>>>,
     pub header: Header,
@@ -210,11 +217,12 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
         .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
         .collect::<Result<_>>()?;
+    let levels = read_levels(job, &inputs, &parts)?;
     // A black input has no data anywhere: an empty data window.
     let input_window = |i: usize| match (sources.inputs[i], &deep[i]) {
         (Source::Black(_), _) => IntegerBounds::zero(),
         (_, Some(deep)) => deep.window,
-        _ => header_of(i).data_window(),
+        _ => levels[i].window(header_of(i)),
     };
 
     let graph: &Graph = &job.graph;
@@ -368,6 +376,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         output: job.output.path(frame),
         inputs,
         parts,
+        levels,
         deep,
         header,
         channels,
@@ -376,6 +385,34 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         computed,
         carried,
     })
+}
+
+/// The level each input reads (`input_level`); a level asked that no input
+/// has is an error.
+fn read_levels(job: &Job, inputs: &[Arc<ExrFile>], parts: &[usize]) -> Result<Vec<Level>> {
+    let levels = inputs
+        .iter()
+        .zip(parts)
+        .map(|(file, &part)| input_level(job, file, part))
+        .collect::<Result<Vec<Level>>>()?;
+    if let Some(asked) = job.level.filter(|&l| l != Vec2(0, 0)) {
+        if !levels.iter().any(|l| l.index == asked) {
+            return Err(Error::usage(format!(
+                "--level {}: no input is mipmapped or ripmapped",
+                tiles::name(asked)
+            )));
+        }
+    }
+    Ok(levels)
+}
+
+/// The level of `part` of `file` read: `job.level` if it has levels
+/// (mipmaps and ripmaps), else its only one.
+pub fn input_level(job: &Job, file: &ExrFile, part: usize) -> Result<Level> {
+    let header = file.header(part);
+    let layered = tiles::levels(header).len() > 1;
+    tiles::level(header, job.level.filter(|_| layered))
+        .map_err(|m| file.error(format!("--level: {m}")))
 }
 
 /// Narrows `header` to the band of rows `y0..y1` (on its block grid) and
@@ -445,14 +482,14 @@ fn deep_input(
     Ok(Some(Arc::new(DeepInput::new(files))))
 }
 
-/// What the engine reads: flat or deep scanlines, no subsampling.
+/// What the engine reads: flat scanlines or tiles, deep scanlines, no
+/// subsampling.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
-    if header.deep && matches!(header.blocks, BlockDescription::Tiles(_)) {
-        return Err(file.error("deep tiled files are not supported: only deep scanlines"));
-    }
-    if let BlockDescription::Tiles(_) = header.blocks {
-        return Err(file.error("tiled files are not supported yet: convert to scanlines first"));
+    if header.deep && header.blocks.has_tiles() {
+        return Err(file.error(
+            "deep tiled files are not supported yet: only deep scanlines (flat tiled files are read)",
+        ));
     }
     if let Some(c) = header
         .channels

@@ -8,5 +8,6 @@ pub mod reader;
 pub mod sequence;
 pub mod standard_attributes;
 pub mod stitch;
+pub mod tiles;
 pub mod writer;
 pub mod zip;

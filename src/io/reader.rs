@@ -5,10 +5,12 @@
 //! cut short by another process while we read it is an input error, where a
 //! memory map would kill the process with SIGBUS.
 
-use super::zip;
+use super::{tiles, zip};
 use crate::error::{Error, Result};
 use crate::guard::catch_panic;
-use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
+use exr::block::chunk::{
+    Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
+};
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
@@ -228,6 +230,25 @@ impl ExrFile {
                 chunk.layer_index
             )));
         }
+        if let CompressedBlock::Tile(tile) = &chunk.compressed_block {
+            let expected = tiles::block_at(header, index).expect("one table entry per block");
+            if tile.coordinates != expected {
+                let show = |t: &TileCoordinates| {
+                    format!(
+                        "tile {},{} of level {},{}",
+                        t.tile_index.x(),
+                        t.tile_index.y(),
+                        t.level_index.x(),
+                        t.level_index.y()
+                    )
+                };
+                return Err(self.error(format!(
+                    "chunk {index} at byte {offset} holds {} instead of {}",
+                    show(&tile.coordinates),
+                    show(&expected)
+                )));
+            }
+        }
         let y = match &chunk.compressed_block {
             CompressedBlock::ScanLine(block) => Some(block.y_coordinate),
             CompressedBlock::DeepScanLine(block) => Some(block.y_coordinate),
@@ -317,14 +338,11 @@ impl ExrFile {
             // Deep sizes are checked where they are unpacked (`io::deep`).
             _ => return Ok(()),
         };
-        let bounds = header
-            .get_block_data_indices(block)
-            .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
-            .map_err(|e| format!("block coordinates: {e}"))?;
+        let size = block_index(header, part, block)?.pixel_size;
         check_inflation(
             header.compression,
             packed,
-            bounds.size.area() * header.channels.bytes_per_pixel,
+            size.area() * header.channels.bytes_per_pixel,
         )
     }
 
@@ -355,12 +373,15 @@ impl ExrFile {
 
     /// Scanline chunk `index` of `part` and the bytes it decompresses to.
     fn zip_chunk(&self, part: usize, index: usize) -> Result<(CompressedScanLineBlock, usize)> {
-        let CompressedBlock::ScanLine(block) = self.read_chunk(part, index)?.compressed_block
-        else {
+        let block = self.read_chunk(part, index)?.compressed_block;
+        let header = self.header(part);
+        let size = block_index(header, part, &block)
+            .map_err(|m| self.undecodable(index, m))?
+            .pixel_size;
+        let CompressedBlock::ScanLine(block) = block else {
             return Err(self.error(format!("chunk {index} is not a scanline block")));
         };
-        let (_, expected) = block_size(self.header(part), block.y_coordinate);
-        Ok((block, expected))
+        Ok((block, size.area() * header.channels.bytes_per_pixel))
     }
 
     fn undecodable(&self, index: usize, message: impl std::fmt::Display) -> Error {
@@ -372,26 +393,29 @@ impl ExrFile {
         let chunk = self.read_chunk(part, index)?;
         let header = self.header(part);
         let block = match (&chunk.compressed_block, header.compression) {
-            // Our own ZIP decoder: libdeflate, several times faster than the crate's.
-            (CompressedBlock::ScanLine(block), Compression::ZIP1 | Compression::ZIP16) => {
-                let window = header.data_window();
-                let top = (block.y_coordinate - window.position.y()) as usize;
-                let (rows, expected) = block_size(header, block.y_coordinate);
-                let packed = &block.compressed_pixels_le;
+            // Our own ZIP decoder: libdeflate, several times faster than the
+            // crate's. A tile's bytes are laid out as a scanline block's of
+            // the tile's width.
+            (
+                CompressedBlock::ScanLine(CompressedScanLineBlock {
+                    compressed_pixels_le: packed,
+                    ..
+                })
+                | CompressedBlock::Tile(CompressedTileBlock {
+                    compressed_pixels_le: packed,
+                    ..
+                }),
+                Compression::ZIP1 | Compression::ZIP16,
+            ) => {
+                let at = block_index(header, part, &chunk.compressed_block)
+                    .map_err(|m| self.undecodable(index, m))?;
+                let expected = at.pixel_size.area() * header.channels.bytes_per_pixel;
                 let data = if packed.len() == expected {
                     packed.clone()
                 } else {
                     zip::decompress(packed, expected).map_err(|m| self.undecodable(index, m))?
                 };
-                UncompressedBlock {
-                    index: BlockIndex {
-                        layer: part,
-                        pixel_position: Vec2(0, top),
-                        pixel_size: Vec2(window.size.width(), rows),
-                        level: Vec2(0, 0),
-                    },
-                    data,
-                }
+                UncompressedBlock { index: at, data }
             }
             _ => catch_panic(|| UncompressedBlock::decompress_chunk(chunk, &self.meta, false))
                 .map_err(|p| self.error(format!("chunk {index}: decoder panic: {p}")))?
@@ -512,16 +536,23 @@ fn check_header_sizes(header: &Header, chunk_bytes: u64) -> std::result::Result<
     Ok(())
 }
 
-/// The lines and raw bytes of the scanline block starting at line `y`.
-fn block_size(header: &Header, y: i32) -> (usize, usize) {
-    let window = header.data_window();
-    let top = (y - window.position.y()) as usize;
-    let rows = header
-        .compression
-        .scan_lines_per_block()
-        .min(window.size.height() - top);
-    (
-        rows,
-        window.size.width() * rows * header.channels.bytes_per_pixel,
-    )
+/// Where a flat block's pixels lie in its level (from its data window's
+/// origin), and its size.
+fn block_index(
+    header: &Header,
+    part: usize,
+    block: &CompressedBlock,
+) -> std::result::Result<BlockIndex, String> {
+    let tile = header
+        .get_block_data_indices(block)
+        .map_err(|e| format!("block coordinates: {e}"))?;
+    let bounds = header
+        .get_absolute_block_pixel_coordinates(tile)
+        .map_err(|e| format!("block coordinates: {e}"))?;
+    Ok(BlockIndex {
+        layer: part,
+        pixel_position: Vec2(bounds.position.x() as usize, bounds.position.y() as usize),
+        pixel_size: bounds.size,
+        level: tile.level_index,
+    })
 }

@@ -381,6 +381,11 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
         blocks: Blocks::ScanLines,
         line_order,
     };
+    write_encoded(path, img, encoding);
+}
+
+/// A single-part file stored as `encoding` says (scanlines or tiles).
+pub fn write_encoded(path: &Path, img: &Img, encoding: Encoding) {
     let layer = layer(img, LayerAttributes::default(), encoding);
     let mut image = Image::from_layer(layer);
     image.attributes.display_window =
