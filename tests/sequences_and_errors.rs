@@ -448,3 +448,22 @@ fn numeric_options_are_finite_and_bounded() {
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
 }
+
+/// An image too wide for the reader's block limit is refused before any
+/// allocation, with nothing left in the folder (it aborted and left a
+/// temporary file).
+#[test]
+fn a_generated_image_too_large_is_refused_before_writing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = limited(&[
+        "generate",
+        s(&dir.path().join("big.exr")),
+        "--width",
+        "100000000",
+        "--height",
+        "100000000",
+    ]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("over the"), "{}", stderr(&out));
+    assert_eq!(entries(dir.path()), Vec::<String>::new());
+}
