@@ -333,18 +333,7 @@ fn a_result_too_wide_to_hold_a_strip_of_is_refused_before_allocating() {
     let out_path = dir.path().join("out");
     std::fs::create_dir(&out_path).unwrap();
     let out = limited(&["over", s(&a), s(&b), "-o", s(&out_path.join("o.exr")), "-q"]);
-    let message = stderr(&out);
-    assert_eq!(out.status.code(), Some(3), "{message}");
-    assert!(
-        message.contains("a.exr") && message.contains("over the"),
-        "{message}"
-    );
-    assert_eq!(message.lines().count(), 1, "{message}");
-    assert_eq!(
-        std::fs::read_dir(&out_path).unwrap().count(),
-        0,
-        "nothing left"
-    );
+    assert_refused(&out, ["a.exr", "over the"], &out_path);
 }
 
 /// EXR's ZIP predictor and byte split (the inverse of what readers undo),
@@ -471,18 +460,7 @@ fn a_deep_pixel_of_millions_of_samples_is_refused_before_flattening() {
         "--threads",
         "8",
     ]);
-    let message = stderr(&out);
-    assert_eq!(out.status.code(), Some(3), "{message}");
-    assert!(
-        message.contains("crowded.exr") && message.contains("deep chunk 0"),
-        "{message}"
-    );
-    assert_eq!(message.lines().count(), 1, "{message}");
-    assert_eq!(
-        std::fs::read_dir(&folder).unwrap().count(),
-        0,
-        "nothing left"
-    );
+    assert_refused(&out, ["crowded.exr", "deep chunk 0"], &folder);
 }
 
 #[test]
@@ -524,15 +502,18 @@ fn an_input_far_wider_than_the_result_is_refused_before_decoding() {
         "--threads",
         "8",
     ]);
-    let message = stderr(&out);
+    assert_refused(&out, ["wide.exr", "over the"], &folder);
+}
+
+/// A one-line input error (exit 3) holding `words`, and nothing left in
+/// `folder`, the output's.
+fn assert_refused(out: &std::process::Output, words: [&str; 2], folder: &Path) {
+    let message = stderr(out);
     assert_eq!(out.status.code(), Some(3), "{message}");
-    assert!(
-        message.contains("wide.exr") && message.contains("over the"),
-        "{message}"
-    );
+    assert!(words.iter().all(|w| message.contains(w)), "{message}");
     assert_eq!(message.lines().count(), 1, "{message}");
     assert_eq!(
-        std::fs::read_dir(&folder).unwrap().count(),
+        std::fs::read_dir(folder).unwrap().count(),
         0,
         "nothing left"
     );
