@@ -124,16 +124,11 @@ fn generate_tiled(dir: &Path, name: &str, kind: &str, width: usize, height: usiz
     };
     let plate = dir.join(format!("{name}-scanlines.exr"));
     generate(&plate, kind, (width, height), &[]);
-    let out = std::process::Command::new(oiiotool)
-        .arg(&plate)
-        .args(["-d", "half", "--tile", "64", "64", "-o"])
-        .arg(dir.join(format!("{name}.0001.exr")))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    succeed(
+        std::process::Command::new(oiiotool)
+            .arg(&plate)
+            .args(["-d", "half", "--tile", "64", "64", "-o"])
+            .arg(dir.join(format!("{name}.0001.exr"))),
     );
     std::fs::remove_file(plate).unwrap();
     true

@@ -73,16 +73,11 @@ fn tiled_inputs_read_as_openexr_reads_them() {
     let output = d.join("out.exr");
     for (tile, c) in [("32", "zip"), ("64", "piz"), ("16", "none")] {
         let tiled = d.join(format!("tiled_{tile}_{c}.exr"));
-        let out = std::process::Command::new(&oiiotool)
-            .arg(&plate)
-            .args(["--tile", tile, tile, "--compression", c, "-o"])
-            .arg(&tiled)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+        succeed(
+            std::process::Command::new(&oiiotool)
+                .arg(&plate)
+                .args(["--tile", tile, tile, "--compression", c, "-o"])
+                .arg(&tiled),
         );
         run_ok(&["transcode", s(&tiled), "-o", s(&output), "-q"]);
         assert_idiff_identical(&idiff, &tiled, &output);
@@ -285,16 +280,11 @@ fn levels_of_openexrs_mipmap_read_as_openexr_reads_them() {
             "--level",
             level,
         ]);
-        let out = std::process::Command::new(&oiiotool)
-            .arg(&image)
-            .args(["--selectmip", level, "-o"])
-            .arg(&theirs)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+        succeed(
+            std::process::Command::new(&oiiotool)
+                .arg(&image)
+                .args(["--selectmip", level, "-o"])
+                .arg(&theirs),
         );
         assert_idiff_identical(&idiff, &theirs, &ours);
     }

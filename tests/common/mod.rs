@@ -700,6 +700,17 @@ pub fn assert_identical(a: &Img, b: &Img) {
     }
 }
 
+/// Runs `command` (a peer making a test file); panics with its stderr if it fails.
+pub fn succeed(command: &mut Command) -> Output {
+    let out = command.output().expect("the command starts");
+    assert!(
+        out.status.success(),
+        "{command:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
 /// A peer tool, or `None` (a skipped check, see `missing`) when it is not
 /// installed.
 pub fn peer(name: &str) -> Option<PathBuf> {
