@@ -89,8 +89,8 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Vec<
             continue;
         }
         for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            if Path::new(&args[at]).is_relative() {
-                args[at] = cwd.join(&args[at]).to_string_lossy().into_owned();
+            if let Some(path) = args.get_mut(at).filter(|p| Path::new(p).is_relative()) {
+                *path = cwd.join(&*path).to_string_lossy().into_owned();
             }
         }
     }
