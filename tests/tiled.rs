@@ -191,6 +191,19 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
     let dir = tempfile::tempdir().unwrap();
     let (input, output) = (dir.path().join("mip.exr"), dir.path().join("out.exr"));
     let size = Vec2(97, 61);
+    // `transcode --level LEVEL` of the input gives `expected` exactly.
+    let level_is = |level: &str, expected: &Img| {
+        run_ok(&[
+            "transcode",
+            s(&input),
+            "-o",
+            s(&output),
+            "-q",
+            "--level",
+            level,
+        ]);
+        assert_identical(&read_image(&output), expected);
+    };
     for (rounding, seed) in [(RoundingMode::Down, 10), (RoundingMode::Up, 20)] {
         let sizes: Vec<Vec2<usize>> = exr::meta::mip_map_levels(rounding, size)
             .map(|(_, s)| s)
@@ -198,17 +211,7 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
         let levels = level_images(&sizes, seed);
         write_levels(&input, &levels, rounding, None);
         for (n, level) in levels.iter().enumerate() {
-            let n = n.to_string();
-            run_ok(&[
-                "transcode",
-                s(&input),
-                "-o",
-                s(&output),
-                "-q",
-                "--level",
-                &n,
-            ]);
-            assert_identical(&read_image(&output), level);
+            level_is(&n.to_string(), level);
         }
         // Level 0 by default, and no level past the last.
         run_ok(&["transcode", s(&input), "-o", s(&output), "-q"]);
@@ -230,17 +233,7 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
     let levels = level_images(&sizes, 30);
     write_levels(&input, &levels, rounding, Some(count));
     for (at, (index, _)) in indexed.iter().enumerate() {
-        let name = format!("{},{}", index.x(), index.y());
-        run_ok(&[
-            "transcode",
-            s(&input),
-            "-o",
-            s(&output),
-            "-q",
-            "--level",
-            &name,
-        ]);
-        assert_identical(&read_image(&output), &levels[at]);
+        level_is(&format!("{},{}", index.x(), index.y()), &levels[at]);
     }
 
     // A composite at level 1 takes the level from every input with levels.
