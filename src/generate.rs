@@ -3,7 +3,7 @@
 //! other node (they are sources: ops without inputs).
 
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -135,7 +135,7 @@ impl Op for Plate {
         IntegerBounds::new(self.origin, (self.width, self.height))
     }
 
-    fn compute(&self, frame: i64, _: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, frame: i64, _: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let (w, h) = (self.width as f32, self.height as f32);
         let (cx, speed) = self.disc(frame);
         let (cy, radius) = (h * 0.5, h * 0.25);

@@ -25,7 +25,7 @@ use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
 
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -670,7 +670,7 @@ impl Op for Located {
         &self,
         frame: i64,
         inputs: &[&Rows],
-        out: &mut Rows,
+        out: &mut RowsMut,
     ) -> std::result::Result<(), String> {
         self.op.compute(frame, inputs, out)
     }

@@ -4,7 +4,19 @@
 use super::graph::{Graph, Node};
 use super::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use rayon::prelude::*;
 use std::ops::Range;
+
+/// Samples below which a band is not worth a task of its own.
+const MIN_BAND_SAMPLES: usize = 16 << 10;
+
+/// Rows per band for `rows` rows `width` wide: a few bands per thread, so
+/// that uneven bands even out, none smaller than `MIN_BAND_SAMPLES`.
+fn band_rows(rows: usize, width: usize) -> usize {
+    let bands = 4 * rayon::current_num_threads();
+    let floor = MIN_BAND_SAMPLES.div_ceil(width.max(1));
+    rows.div_ceil(bands).max(floor).max(1)
+}
 
 /// One frame's evaluation state.
 pub struct Composer<'g> {
@@ -96,18 +108,16 @@ impl<'g> Composer<'g> {
                     };
                     let start = self.windows[n].end();
                     if end > start {
-                        let node = &self.windows[n];
-                        let mut out = Rows::zeros(
-                            node.x,
-                            start,
-                            node.width,
-                            (end - start) as usize,
-                            node.channels.clone(),
-                            node.valid,
-                        );
-                        let args: Vec<&Rows> = inputs.iter().map(|&i| &self.windows[i]).collect();
-                        op.compute(frame, &args, &mut out)?;
-                        self.windows[n].append(out);
+                        // Computed in place, band by band on the pool: nodes
+                        // come after their inputs, so those are borrowed apart.
+                        let (earlier, rest) = self.windows.split_at_mut(n);
+                        let node = &mut rest[0];
+                        node.grow((end - start) as usize);
+                        let args: Vec<&Rows> = inputs.iter().map(|&i| &earlier[i]).collect();
+                        let band = band_rows((end - start) as usize, node.width);
+                        node.bands(start, band)
+                            .into_par_iter()
+                            .try_for_each(|mut out| op.compute(frame, &args, &mut out))?;
                     }
                     // Inputs read by no later node are trimmed now, not after
                     // the last node: a long chain holds a few strips, not one
@@ -163,8 +173,10 @@ impl<'g> Composer<'g> {
 mod tests {
     use super::*;
     use crate::engine::graph::Op;
-    use crate::engine::strip::Samples;
+    use crate::engine::strip::{RowsMut, Samples};
     use exr::meta::attribute::SampleType;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Arc;
 
     /// Sums each pixel's column over rows y - halo ..= y + halo, clamped to
     /// the image: a stand-in for any neighbourhood filter.
@@ -172,6 +184,20 @@ mod tests {
         halo: usize,
         top: i32,
         bottom: i32,
+        /// How many bands it computed.
+        bands: Arc<AtomicUsize>,
+    }
+
+    impl VerticalSum {
+        fn new(halo: usize, top: i32, bottom: i32) -> Self {
+            let bands = Arc::default();
+            VerticalSum {
+                halo,
+                top,
+                bottom,
+                bands,
+            }
+        }
     }
 
     impl Op for VerticalSum {
@@ -181,7 +207,8 @@ mod tests {
         fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
             inputs[0].to_vec()
         }
-        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
+            self.bands.fetch_add(1, Ordering::Relaxed);
             let input = inputs[0];
             let h = self.halo as i32;
             for y in out.y..out.end() {
@@ -221,7 +248,7 @@ mod tests {
         let mut nodes = vec![Node::Input(0)];
         for (i, &halo) in halos.iter().enumerate() {
             nodes.push(Node::Op {
-                op: Box::new(VerticalSum { halo, top, bottom }),
+                op: Box::new(VerticalSum::new(halo, top, bottom)),
                 inputs: vec![i],
             });
         }
@@ -277,11 +304,7 @@ mod tests {
             nodes: vec![
                 Node::Input(0),
                 Node::Op {
-                    op: Box::new(VerticalSum {
-                        halo: 5,
-                        top,
-                        bottom,
-                    }),
+                    op: Box::new(VerticalSum::new(5, top, bottom)),
                     inputs: vec![0],
                 },
             ],
@@ -299,6 +322,42 @@ mod tests {
                 "kept {}",
                 composer.windows[0].height
             );
+        }
+    }
+
+    #[test]
+    fn bands_computed_apart_give_the_rows_computed_whole() {
+        // Wide enough rows that a strip makes several bands.
+        let (width, height, halo) = (4096usize, 64usize, 3usize);
+        let window = IntegerBounds::new((0, 0), (width, height));
+        let op = VerticalSum::new(halo, 0, height as i32);
+        let bands = op.bands.clone();
+        let graph = Graph {
+            nodes: vec![
+                Node::Input(0),
+                Node::Op {
+                    op: Box::new(op),
+                    inputs: vec![0],
+                },
+            ],
+        };
+        let channels = vec![vec![ChannelDescription::named("Y", SampleType::F32)]; 2];
+        let image: Vec<f32> = (0..width * height).map(|i| (i % 251) as f32).collect();
+        let mut input = Rows::zeros(0, 0, width, height, channels[0].clone(), window);
+        input.planes[0] = Samples::F32(image.clone());
+        let mut composer = Composer::new(&graph, window, &channels, &[window; 2], 1);
+        let done = composer
+            .push(0, 0..height as i32, vec![input])
+            .unwrap()
+            .unwrap();
+        assert!(bands.load(Ordering::Relaxed) > 1, "one band only");
+        let mut got = vec![0.0; width * height];
+        done.planes[0].read_f32(0..width * height, &mut got);
+        for x in [0, 1, width / 2, width - 1] {
+            let column: Vec<f32> = (0..height).map(|y| image[y * width + x]).collect();
+            let expected = reference(&column, halo);
+            let got: Vec<f32> = (0..height).map(|y| got[y * width + x]).collect();
+            assert_eq!(got, expected, "column {x}");
         }
     }
 }

@@ -5,7 +5,7 @@
 //! the block rows overlapping a strip (`tiles::Level`).
 
 use super::deep_input::DeepInput;
-use super::strip::{Rows, Samples};
+use super::strip::{Extent, Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
 use crate::io::tiles::{self, Level};
@@ -267,13 +267,15 @@ impl InputCursor {
             unsafe { plane.set_len(width * height) };
         }
         Ok(Rows {
-            x: columns.0,
-            y: rows.start,
-            width,
-            height,
+            extent: Extent {
+                x: columns.0,
+                y: rows.start,
+                width,
+                height,
+                valid: self.window,
+            },
             channels,
             planes,
-            valid: self.window,
         })
     }
 }

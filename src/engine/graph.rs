@@ -1,6 +1,6 @@
 //! The node graph a job runs: inputs, operations, and the node that is written.
 
-use super::strip::Rows;
+use super::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
 
@@ -54,7 +54,10 @@ pub trait Op: Send + Sync {
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data
     /// window, in the same columns as `out`. An op without inputs is a source.
     /// An error (bad values in an input, say) ends the frame with its message.
-    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String>;
+    ///
+    /// `out` is one band of the rows the engine needs: it runs the bands of a
+    /// node on the thread pool at once, so an op is written single-threaded.
+    fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String>;
 }
 
 pub enum Node {

@@ -84,14 +84,7 @@ impl Samples {
     /// Stores f32 values into `range`, rounding to the plane's type
     /// (half: round to nearest even; u32: saturating, NaN to 0).
     pub fn write_f32(&mut self, range: Range<usize>, values: &[f32]) {
-        match self {
-            Samples::F16(v) => v[range].convert_from_f32_slice(values),
-            Samples::F32(v) => v[range].copy_from_slice(values),
-            Samples::U32(v) => v[range]
-                .iter_mut()
-                .zip(values)
-                .for_each(|(o, &s)| *o = s as u32),
-        }
+        self.as_mut().write_f32(range, values)
     }
 
     /// The native-endian bytes of `range`.
@@ -104,10 +97,24 @@ impl Samples {
     }
 
     pub fn bytes_mut(&mut self, range: Range<usize>) -> &mut [u8] {
+        self.as_mut().into_bytes(range)
+    }
+
+    /// The samples as a plane that can be split.
+    pub fn as_mut(&mut self) -> PlaneMut<'_> {
         match self {
-            Samples::F16(v) => bytemuck::cast_slice_mut(&mut v[range]),
-            Samples::F32(v) => bytemuck::cast_slice_mut(&mut v[range]),
-            Samples::U32(v) => bytemuck::cast_slice_mut(&mut v[range]),
+            Samples::F16(v) => PlaneMut::F16(v),
+            Samples::F32(v) => PlaneMut::F32(v),
+            Samples::U32(v) => PlaneMut::U32(v),
+        }
+    }
+
+    /// Appends `count` zero samples.
+    fn grow(&mut self, count: usize) {
+        match self {
+            Samples::F16(v) => v.resize(v.len() + count, f16::ZERO),
+            Samples::F32(v) => v.resize(v.len() + count, 0.0),
+            Samples::U32(v) => v.resize(v.len() + count, 0),
         }
     }
 
@@ -139,50 +146,84 @@ impl Samples {
     }
 }
 
-/// Rows `y .. y + height` of an image, `width` pixels from column `x`.
-#[derive(Clone, Debug)]
-pub struct Rows {
+/// A plane of samples borrowed to be written: a whole plane, or the rows of
+/// one band of it.
+pub enum PlaneMut<'a> {
+    F16(&'a mut [f16]),
+    F32(&'a mut [f32]),
+    U32(&'a mut [u32]),
+}
+
+impl<'a> PlaneMut<'a> {
+    /// Stores f32 values into `range`, rounding to the plane's type
+    /// (half: round to nearest even; u32: saturating, NaN to 0).
+    pub fn write_f32(&mut self, range: Range<usize>, values: &[f32]) {
+        match self {
+            PlaneMut::F16(v) => v[range].convert_from_f32_slice(values),
+            PlaneMut::F32(v) => v[range].copy_from_slice(values),
+            PlaneMut::U32(v) => v[range]
+                .iter_mut()
+                .zip(values)
+                .for_each(|(o, &s)| *o = s as u32),
+        }
+    }
+
+    pub fn bytes_mut(&mut self, range: Range<usize>) -> &mut [u8] {
+        self.reborrow().into_bytes(range)
+    }
+
+    fn into_bytes(self, range: Range<usize>) -> &'a mut [u8] {
+        match self {
+            PlaneMut::F16(v) => bytemuck::cast_slice_mut(&mut v[range]),
+            PlaneMut::F32(v) => bytemuck::cast_slice_mut(&mut v[range]),
+            PlaneMut::U32(v) => bytemuck::cast_slice_mut(&mut v[range]),
+        }
+    }
+
+    fn reborrow(&mut self) -> PlaneMut<'_> {
+        match self {
+            PlaneMut::F16(v) => PlaneMut::F16(v),
+            PlaneMut::F32(v) => PlaneMut::F32(v),
+            PlaneMut::U32(v) => PlaneMut::U32(v),
+        }
+    }
+
+    /// The first `mid` samples and the rest.
+    fn split_at(self, mid: usize) -> (Self, Self) {
+        match self {
+            PlaneMut::F16(v) => {
+                let (a, b) = v.split_at_mut(mid);
+                (PlaneMut::F16(a), PlaneMut::F16(b))
+            }
+            PlaneMut::F32(v) => {
+                let (a, b) = v.split_at_mut(mid);
+                (PlaneMut::F32(a), PlaneMut::F32(b))
+            }
+            PlaneMut::U32(v) => {
+                let (a, b) = v.split_at_mut(mid);
+                (PlaneMut::U32(a), PlaneMut::U32(b))
+            }
+        }
+    }
+}
+
+/// Where rows `y .. y + height`, `width` pixels from column `x`, lie in an
+/// image, and where the image has data: what owned rows and the bands
+/// written in place share.
+#[derive(Clone, Copy, Debug)]
+pub struct Extent {
     pub x: i32,
     pub y: i32,
     pub width: usize,
     pub height: usize,
-    pub channels: Vec<ChannelDescription>,
-    pub planes: Vec<Samples>,
     /// Where the image has data; outside it every channel is transparent black
     /// (and alpha is 0 even when the image has no alpha channel).
     pub valid: IntegerBounds,
 }
 
-impl Rows {
-    pub fn zeros(
-        x: i32,
-        y: i32,
-        width: usize,
-        height: usize,
-        channels: Vec<ChannelDescription>,
-        valid: IntegerBounds,
-    ) -> Self {
-        let planes = channels
-            .iter()
-            .map(|c| Samples::zeros(c.sample_type, width * height))
-            .collect();
-        Rows {
-            x,
-            y,
-            width,
-            height,
-            channels,
-            planes,
-            valid,
-        }
-    }
-
+impl Extent {
     pub fn end(&self) -> i32 {
         self.y + self.height as i32
-    }
-
-    pub fn channel_index(&self, name: &str) -> Option<usize> {
-        self.channels.iter().position(|c| c.name.eq(name))
     }
 
     /// Sample index range of absolute row `y`.
@@ -222,20 +263,98 @@ impl Rows {
         start..self.end().min(self.valid.end().y()).max(start)
     }
 
+    /// Whether absolute row `y` is inside the valid window.
+    pub fn valid_row(&self, y: i32) -> bool {
+        y >= self.valid.position.y() && y < self.valid.end().y()
+    }
+}
+
+/// Rows of an image, one typed plane per channel, each `width * height`
+/// samples row-major.
+#[derive(Clone, Debug)]
+pub struct Rows {
+    pub extent: Extent,
+    pub channels: Vec<ChannelDescription>,
+    pub planes: Vec<Samples>,
+}
+
+impl std::ops::Deref for Rows {
+    type Target = Extent;
+    fn deref(&self) -> &Extent {
+        &self.extent
+    }
+}
+
+impl std::ops::DerefMut for Rows {
+    fn deref_mut(&mut self) -> &mut Extent {
+        &mut self.extent
+    }
+}
+
+/// A band of rows written in place: what an operation computes, while other
+/// bands of the same rows are computed on other threads.
+pub struct RowsMut<'a> {
+    pub extent: Extent,
+    pub channels: &'a [ChannelDescription],
+    pub planes: Vec<PlaneMut<'a>>,
+}
+
+impl std::ops::Deref for RowsMut<'_> {
+    type Target = Extent;
+    fn deref(&self) -> &Extent {
+        &self.extent
+    }
+}
+
+impl RowsMut<'_> {
+    pub fn channel_index(&self, name: &str) -> Option<usize> {
+        channel_index(self.channels, name)
+    }
+
     /// Copies absolute row `y` of every plane from `other`, which has the
     /// same channels and columns.
     pub fn copy_row_from(&mut self, other: &Rows, y: i32) {
-        let range = self.row_range(y);
+        let range = self.extent.row_range(y);
         for (plane, source) in self.planes.iter_mut().zip(&other.planes) {
             plane
                 .bytes_mut(range.clone())
                 .copy_from_slice(source.bytes(other.row_range(y)));
         }
     }
+}
 
-    /// Whether absolute row `y` is inside the valid window.
-    pub fn valid_row(&self, y: i32) -> bool {
-        y >= self.valid.position.y() && y < self.valid.end().y()
+fn channel_index(channels: &[ChannelDescription], name: &str) -> Option<usize> {
+    channels.iter().position(|c| c.name.eq(name))
+}
+
+impl Rows {
+    pub fn zeros(
+        x: i32,
+        y: i32,
+        width: usize,
+        height: usize,
+        channels: Vec<ChannelDescription>,
+        valid: IntegerBounds,
+    ) -> Self {
+        let planes = channels
+            .iter()
+            .map(|c| Samples::zeros(c.sample_type, width * height))
+            .collect();
+        Rows {
+            extent: Extent {
+                x,
+                y,
+                width,
+                height,
+                valid,
+            },
+            channels,
+            planes,
+        }
+    }
+
+    pub fn channel_index(&self, name: &str) -> Option<usize> {
+        channel_index(&self.channels, name)
     }
 
     /// Appends the rows of `below`, which must start at `self.end()` and have
@@ -250,7 +369,47 @@ impl Rows {
                 plane.extend(other);
             }
         }
-        self.height += below.height;
+        self.extent.height += below.extent.height;
+    }
+
+    /// Appends `height` rows of zeros, to be written in place (`bands`).
+    pub fn grow(&mut self, height: usize) {
+        for plane in &mut self.planes {
+            plane.grow(height * self.extent.width);
+        }
+        self.extent.height += height;
+    }
+
+    /// Rows `from ..` (absolute) cut into bands of `band` rows (the last
+    /// one shorter), each writable on its own.
+    pub fn bands(&mut self, from: i32, band: usize) -> Vec<RowsMut<'_>> {
+        let skip = (from - self.extent.y) as usize * self.extent.width;
+        let mut rest: Vec<PlaneMut> = self
+            .planes
+            .iter_mut()
+            .map(|p| p.as_mut().split_at(skip).1)
+            .collect();
+        let mut bands = Vec::new();
+        let mut y = from;
+        while y < self.extent.end() {
+            let height = band.min((self.extent.end() - y) as usize);
+            let (now, later): (Vec<_>, Vec<_>) = rest
+                .into_iter()
+                .map(|p| p.split_at(height * self.extent.width))
+                .unzip();
+            rest = later;
+            bands.push(RowsMut {
+                extent: Extent {
+                    y,
+                    height,
+                    ..self.extent
+                },
+                channels: &self.channels,
+                planes: now,
+            });
+            y += height as i32;
+        }
+        bands
     }
 
     /// Forgets the rows above `y`.
@@ -260,7 +419,7 @@ impl Rows {
             return;
         }
         for plane in &mut self.planes {
-            plane.drop_front(count * self.width);
+            plane.drop_front(count * self.extent.width);
         }
         self.y += count as i32;
         self.height -= count;
@@ -298,13 +457,13 @@ impl Rows {
             })
             .collect();
         Rows {
-            x: self.x,
-            y: range.start,
-            width: self.width,
-            height: (range.end - range.start) as usize,
+            extent: Extent {
+                y: range.start,
+                height: (range.end - range.start) as usize,
+                ..self.extent
+            },
             channels: self.channels.clone(),
             planes,
-            valid: self.valid,
         }
     }
 }

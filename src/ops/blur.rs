@@ -5,9 +5,8 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, Samples};
+use crate::engine::strip::{Rows, RowsMut, Samples};
 use exr::meta::attribute::{ChannelDescription, SampleType};
-use rayon::prelude::*;
 use std::sync::Arc;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -64,7 +63,7 @@ impl Op for Horizontal {
         self.layers.check(inputs)
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let columns = out.valid_columns();
         if columns.is_empty() {
@@ -80,38 +79,27 @@ impl Op for Horizontal {
                     .expect("a filtered channel")
             })
             .collect();
-        let filtered: Vec<Vec<Vec<f32>>> = out
-            .valid_rows()
-            .into_par_iter()
-            .map(|y| {
-                let mut row = vec![0.0f32; input.width];
-                // The row with `radius` clamped samples added on each side.
-                let mut padded = vec![0.0f32; columns.len() + 2 * radius];
-                sources
-                    .iter()
-                    .map(|&source| {
-                        input.planes[source].read_f32(input.row_range(y), &mut row);
-                        let line = &row[columns.clone()];
-                        let (first, last) = (line[0], line[line.len() - 1]);
-                        padded[..radius].fill(first);
-                        padded[radius..radius + line.len()].copy_from_slice(line);
-                        padded[radius + line.len()..].fill(last);
-                        // Tap by tap across the row (vectorises), each pixel's
-                        // sum still taken from k = -R upwards.
-                        let mut sums = vec![0.0f32; line.len()];
-                        for (k, w) in self.weights.iter().enumerate() {
-                            for (sum, v) in sums.iter_mut().zip(&padded[k..]) {
-                                *sum += w * v;
-                            }
-                        }
-                        sums
-                    })
-                    .collect()
-            })
-            .collect();
-        for (y, channels) in out.valid_rows().zip(filtered) {
+        let mut row = vec![0.0f32; input.width];
+        // The row with `radius` clamped samples added on each side.
+        let mut padded = vec![0.0f32; columns.len() + 2 * radius];
+        let mut sums = vec![0.0f32; columns.len()];
+        for y in out.valid_rows() {
             let range = out.row_range(y);
-            for (plane, sums) in out.planes.iter_mut().zip(channels) {
+            for (plane, &source) in out.planes.iter_mut().zip(&sources) {
+                input.planes[source].read_f32(input.row_range(y), &mut row);
+                let line = &row[columns.clone()];
+                let (first, last) = (line[0], line[line.len() - 1]);
+                padded[..radius].fill(first);
+                padded[radius..radius + line.len()].copy_from_slice(line);
+                padded[radius + line.len()..].fill(last);
+                // Tap by tap across the row (vectorises), each pixel's sum
+                // still taken from k = -R upwards.
+                sums.fill(0.0);
+                for (k, w) in self.weights.iter().enumerate() {
+                    for (sum, v) in sums.iter_mut().zip(&padded[k..]) {
+                        *sum += w * v;
+                    }
+                }
                 plane.write_f32(
                     range.start + columns.start..range.start + columns.end,
                     &sums,
@@ -131,7 +119,7 @@ impl Op for Vertical {
         inputs[1].to_vec()
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let (blurred, original) = (inputs[0], inputs[1]);
         let radius = self.weights.len() as i32 / 2;
         // The data window's rows (as far as they are held): the clamp's edges.
@@ -150,15 +138,13 @@ impl Op for Vertical {
                     })
             })
             .collect();
-        let filtered: Vec<Vec<Option<Vec<f32>>>> = out
-            .valid_rows()
-            .into_par_iter()
-            .map(|y| {
-                planes
-                    .iter()
-                    .map(|plane| {
-                        let plane = (*plane)?;
-                        let mut sums = vec![0.0f32; columns.len()];
+        let mut sums = vec![0.0f32; columns.len()];
+        for y in out.valid_rows() {
+            let range = out.row_range(y);
+            for (c, plane) in planes.iter().enumerate() {
+                match plane {
+                    Some(plane) => {
+                        sums.fill(0.0);
                         for (k, w) in (-radius..=radius).zip(self.weights.iter()) {
                             let from = blurred.row_range((y + k).clamp(rows.start, rows.end - 1));
                             let source =
@@ -167,19 +153,11 @@ impl Op for Vertical {
                                 *sum += w * v;
                             }
                         }
-                        Some(sums)
-                    })
-                    .collect()
-            })
-            .collect();
-        for (y, channels) in out.valid_rows().zip(filtered) {
-            let range = out.row_range(y);
-            for (c, sums) in channels.into_iter().enumerate() {
-                match sums {
-                    Some(sums) => out.planes[c].write_f32(
-                        range.start + columns.start..range.start + columns.end,
-                        &sums,
-                    ),
+                        out.planes[c].write_f32(
+                            range.start + columns.start..range.start + columns.end,
+                            &sums,
+                        );
+                    }
                     None => {
                         let name = out.channels[c].name.to_string();
                         let s = original

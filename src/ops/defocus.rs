@@ -5,7 +5,7 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -115,7 +115,7 @@ impl Op for Defocus {
             .check_with(inputs[0], &[&self.z_channel], "depth")
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let names = self.layers.filtered(&input.channels);
         let (w, r) = (input.width, self.max_radius as i32);

@@ -6,7 +6,7 @@
 use super::layers::Selection;
 use super::merge::{Merge, MergeOp};
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
@@ -39,7 +39,7 @@ impl Op for Shadow {
         }
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let (first, second) = (inputs[0], inputs[1]);
         let kept = match self.0 {
             Step::Light => first,

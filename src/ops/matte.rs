@@ -4,7 +4,7 @@
 //! Formulas: specs/ops.md, "Matting".
 
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
 const RGB: [&str; 3] = ["R", "G", "B"];
@@ -153,7 +153,7 @@ impl Op for Matte {
         inputs[0]
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let columns = out.valid_columns();
         let mut colours: Vec<[Vec<f32>; 3]> = vec![Default::default(); inputs.len()];
         let mut result: [Vec<f32>; 4] = Default::default();

@@ -3,7 +3,7 @@
 
 use super::layers::{Layer, Selection};
 use crate::engine::graph::{intersection, union, Op};
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Extent, Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
 
@@ -47,7 +47,7 @@ pub enum MergeOp {
 }
 
 /// Which inputs' data windows bound the result (where it can be nonzero).
-enum Extent {
+enum Bounds {
     Union,
     Intersection,
     A,
@@ -122,13 +122,13 @@ impl MergeOp {
         matches!(self, Over | Under | Atop | Xor | Plus | From | Stencil)
     }
 
-    fn extent(self) -> Extent {
+    fn bounds(self) -> Bounds {
         use MergeOp::*;
         match self {
-            In | Mask | Multiply | Divide => Extent::Intersection,
-            Out | Copy => Extent::A,
-            Atop | Stencil => Extent::B,
-            _ => Extent::Union,
+            In | Mask | Multiply | Divide => Bounds::Intersection,
+            Out | Copy => Bounds::A,
+            Atop | Stencil => Bounds::B,
+            _ => Bounds::Union,
         }
     }
 }
@@ -168,8 +168,8 @@ enum Role {
 }
 
 impl Merge {
-    fn roles(&self, out: &Rows, layers: &[Layer]) -> Vec<Role> {
-        out.channels
+    fn roles(&self, channels: &[ChannelDescription], layers: &[Layer]) -> Vec<Role> {
+        channels
             .iter()
             .map(|c| {
                 let name = c.name.to_string();
@@ -224,11 +224,11 @@ impl Op for Merge {
 
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         let (a, b) = (inputs[0], inputs[1]);
-        let window = match self.op.extent() {
-            Extent::Union => union(a, b),
-            Extent::Intersection => intersection(a, b),
-            Extent::A => a,
-            Extent::B => b,
+        let window = match self.op.bounds() {
+            Bounds::Union => union(a, b),
+            Bounds::Intersection => intersection(a, b),
+            Bounds::A => a,
+            Bounds::B => b,
         };
         if self.mix < 1.0 {
             union(window, b)
@@ -247,11 +247,11 @@ impl Op for Merge {
             .all(|y| visible_columns(a, &layers, y).is_empty())
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let (a, b) = (inputs[0], inputs[1]);
         let lists = [a.channels.as_slice(), b.channels.as_slice()];
         let layers = self.layers.resolve(&lists);
-        let roles = self.roles(out, &layers);
+        let roles = self.roles(out.channels, &layers);
         let columns = out.valid_columns();
         let w = columns.len();
         let mut alphas = vec![(vec![0.0f32; w], vec![0.0f32; w], vec![0.0f32; w]); layers.len()];
@@ -281,7 +281,7 @@ impl Op for Merge {
                 continue;
             }
             let n = span.len();
-            let at = |rows: &Rows| {
+            let at = |rows: &Extent| {
                 let r = rows.row_range(y);
                 r.start + span.start..r.start + span.end
             };
@@ -330,7 +330,7 @@ impl Op for Merge {
 /// Copies B's samples of row `y`, sample offsets `columns`, into `out`; an
 /// alpha only A has takes B's alpha as B implies it, colours only A has stay 0.
 fn pass_b(
-    out: &mut Rows,
+    out: &mut RowsMut,
     b: &Rows,
     roles: &[Role],
     layers: &[Layer],
@@ -338,7 +338,7 @@ fn pass_b(
     columns: Range<usize>,
     scratch: &mut [f32],
 ) {
-    let at = |rows: &Rows| {
+    let at = |rows: &Extent| {
         let r = rows.row_range(y);
         r.start + columns.start..r.start + columns.end
     };

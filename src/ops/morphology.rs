@@ -4,9 +4,8 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
-use rayon::prelude::*;
 
 pub struct Morphology {
     pub radius: usize,
@@ -42,7 +41,7 @@ impl Op for Morphology {
         }
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let r = self.radius as i32;
         // Half-width of the disc on each row offset.
@@ -60,6 +59,10 @@ impl Op for Morphology {
         for y in out.valid_rows() {
             out.copy_row_from(input, y);
         }
+        // Only the input rows this band's discs reach are converted.
+        let wanted = out.valid_rows();
+        let held = (wanted.start - r).max(held.start)..(wanted.end + r).min(held.end);
+        let mut values = vec![0.0f32; columns.len()];
         for &a in &alphas {
             let rows: Vec<Vec<f32>> = held
                 .clone()
@@ -69,40 +72,27 @@ impl Op for Morphology {
                     v
                 })
                 .collect();
-            let results: Vec<Vec<f32>> = out
-                .valid_rows()
-                .into_par_iter()
-                .map(|y| {
-                    columns
-                        .clone()
-                        .map(|x| {
-                            let mut best = if self.dilate { f32::MIN } else { f32::MAX };
-                            for (dy, &span) in (-r..=r).zip(&spans) {
-                                let yy = y + dy;
-                                if yy < held.start || yy >= held.end {
-                                    continue;
-                                }
-                                let row = &rows[(yy - held.start) as usize];
-                                let from = x.saturating_sub(span).max(columns.start);
-                                let to = (x + span + 1).min(columns.end);
-                                for &v in &row[from..to] {
-                                    best = if self.dilate {
-                                        best.max(v)
-                                    } else {
-                                        best.min(v)
-                                    };
-                                }
-                            }
-                            if self.invert {
-                                1.0 - best
+            for y in out.valid_rows() {
+                for (value, x) in values.iter_mut().zip(columns.clone()) {
+                    let mut best = if self.dilate { f32::MIN } else { f32::MAX };
+                    for (dy, &span) in (-r..=r).zip(&spans) {
+                        let yy = y + dy;
+                        if yy < held.start || yy >= held.end {
+                            continue;
+                        }
+                        let row = &rows[(yy - held.start) as usize];
+                        let from = x.saturating_sub(span).max(columns.start);
+                        let to = (x + span + 1).min(columns.end);
+                        for &v in &row[from..to] {
+                            best = if self.dilate {
+                                best.max(v)
                             } else {
-                                best
-                            }
-                        })
-                        .collect()
-                })
-                .collect();
-            for (y, values) in out.valid_rows().zip(results) {
+                                best.min(v)
+                            };
+                        }
+                    }
+                    *value = if self.invert { 1.0 - best } else { best };
+                }
                 let range = out.row_range(y);
                 out.planes[a].write_f32(
                     range.start + columns.start..range.start + columns.end,

@@ -2,7 +2,7 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 
 pub struct Premult {
@@ -32,7 +32,7 @@ impl Op for Premult {
         self.layers.check(inputs)
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let layers = self.layers.resolve(&[input.channels.as_slice()]);
         let mut alpha = vec![0.0f32; out.width];

@@ -4,7 +4,7 @@
 //! Row by row: no halo. specs/ops.md, "stereo".
 
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -48,7 +48,7 @@ impl Op for Stereo {
         }
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let z = input.channel_index(&self.z_channel).expect("checked");
         let columns = out.valid_columns();

@@ -5,7 +5,7 @@
 
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 
 pub struct VectorBlur {
@@ -74,7 +74,7 @@ impl Op for VectorBlur {
         self.layers.check_with(inputs[0], &[u, v], "displacement")
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let names = self.layers.filtered(&input.channels);
         let (w, reach) = (input.width, self.reach as i32);
@@ -131,10 +131,11 @@ impl Op for VectorBlur {
                 }
             }
         }
+        let samples = out.height * w;
         for (c, channel) in out.channels.iter().enumerate() {
             let name = channel.name.to_string();
             match names.iter().position(|n| *n == name) {
-                Some(k) => out.planes[c].write_f32(0..out.height * w, &sums[k]),
+                Some(k) => out.planes[c].write_f32(0..samples, &sums[k]),
                 None => {
                     let s = input.channel_index(&name).expect("the input's channel");
                     for y in out.valid_rows() {

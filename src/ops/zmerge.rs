@@ -3,7 +3,7 @@
 //! front to back with `over`. specs/ops.md, "zmerge".
 
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
@@ -60,7 +60,7 @@ impl Op for ZMerge {
         }
     }
 
-    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut Rows) -> Result<(), String> {
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let n = inputs.len();
         let w = out.width;
         let columns = out.valid_columns();
