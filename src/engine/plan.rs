@@ -470,6 +470,7 @@ fn deep_input(
     }
     let at = sources.inputs[i].file_frame();
     let mut files = vec![(file.clone(), part)];
+    let mut levels = vec![input_level(job, file, part)?];
     for pattern in merged {
         let other = Arc::new(ExrFile::open(&pattern.path(at), job.frame_label(at))?);
         let part = choose_part(&other, None, job.view.as_deref())?;
@@ -477,20 +478,16 @@ fn deep_input(
         if !other.header(part).deep {
             return Err(other.error("is not deep: deepmerge takes deep files only"));
         }
+        levels.push(input_level(job, &other, part)?);
         files.push((other, part));
     }
-    Ok(Some(Arc::new(DeepInput::new(files))))
+    Ok(Some(Arc::new(DeepInput::new(files, levels))))
 }
 
-/// What the engine reads: flat scanlines or tiles, deep scanlines, no
+/// What the engine reads: flat or deep, scanlines or tiles, no
 /// subsampling.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
-    if header.deep && header.blocks.has_tiles() {
-        return Err(file.error(
-            "deep tiled files are not supported yet: only deep scanlines (flat tiled files are read)",
-        ));
-    }
     if let Some(c) = header
         .channels
         .list
