@@ -247,3 +247,63 @@ fn a_damaged_deep_tiled_file_is_refused_in_one_line() {
         }
     }
 }
+
+#[test]
+fn a_deep_part_is_carried_whole_and_flattened_with_all_parts() {
+    let (Some(oiio), Some(idiff), Some(multipart)) =
+        (peer("oiiotool"), peer("idiff"), peer("exrmultipart"))
+    else {
+        return;
+    };
+    let Some(input) = pass("Trunks") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // oiiotool writes no mixed deep and flat file: exrmultipart joins them.
+    let (flat, deep, both) = (d.join("flat.exr"), d.join("deep.exr"), d.join("both.exr"));
+    generate(&flat, "bg", (1024, 576), &[]);
+    oiiotool_write(
+        &oiio,
+        &input,
+        &["--tile", "32", "32", "--compression", "zip"],
+        &deep,
+    );
+    let status = Command::new(multipart)
+        .args(["-combine", "-i"])
+        .args([&flat, &deep])
+        .arg("-o")
+        .arg(&both)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    // The flat part worked on, the deep one carried: OpenEXR reads it back,
+    // the same samples.
+    let carried = d.join("carried.exr");
+    let part = format!("{}:0", s(&both));
+    ok(&[
+        "transcode",
+        &part,
+        "-o",
+        s(&carried),
+        "-q",
+        "--compression",
+        "piz",
+    ]);
+    ok(&["info", s(&carried)]);
+    let flattened = |file: &Path, name: &str| {
+        let out = d.join(name);
+        oiiotool_write(&oiio, file, &["--subimage", "1", "--flatten"], &out);
+        out
+    };
+    assert_idiff_identical(
+        &idiff,
+        &flattened(&both, "in.exr"),
+        &flattened(&carried, "out.exr"),
+    );
+    // With --all-parts the deep part comes out flattened, as `flatten` makes it.
+    let (all, alone) = (d.join("all.exr"), d.join("alone.exr"));
+    ok(&["transcode", s(&both), "-o", s(&all), "-q", "--all-parts"]);
+    ok(&["flatten", s(&deep), "-o", s(&alone), "-q"]);
+    let parts = read_parts(&all);
+    assert_eq!(parts.len(), 2);
+    assert_identical(&parts[1], &read_image(&alone));
+}

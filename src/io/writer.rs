@@ -10,9 +10,9 @@
 use super::reader::ExrFile;
 use crate::engine::encode::IndexedChunk;
 use crate::error::{Error, Result};
-use exr::meta::attribute::{AttributeValue, KeyCode};
+use exr::meta::attribute::{AttributeValue, BlockType, KeyCode};
 use exr::meta::header::Header;
-use exr::meta::MetaData;
+use exr::meta::{MetaData, Requirements};
 use std::fs::{self, File};
 use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -197,8 +197,7 @@ impl<W: Write> Write for Counting<W> {
 /// The magic number, version and flags, and each header's attributes
 /// sorted by name; checked as the exr crate checks what it writes.
 pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
-    let mut requirements = MetaData::validate(headers, false)?;
-    requirements.file_format_version = 2;
+    let requirements = requirements(headers)?;
     let mut bytes = exr::meta::magic_number::BYTES.to_vec();
     requirements.write(&mut bytes)?;
     for header in headers {
@@ -207,6 +206,14 @@ pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
         for (name, value) in &attributes {
             match value {
                 AttributeValue::KeyCode(code) => write_key_code(name, code, &mut bytes),
+                // The crate names a deep part's type as a flat one's.
+                AttributeValue::BlockType(_) if header.deep => {
+                    let deep = match header.blocks.has_tiles() {
+                        true => BlockType::DeepTile,
+                        false => BlockType::DeepScanLine,
+                    };
+                    exr::meta::attribute::write(name, &AttributeValue::BlockType(deep), &mut bytes)?
+                }
                 value => exr::meta::attribute::write(name, value, &mut bytes)?,
             }
         }
@@ -217,6 +224,30 @@ pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
         bytes.push(0);
     }
     Ok(bytes)
+}
+
+/// The version flags `headers` need, once checked. The crate's
+/// `MetaData::validate` refuses deep parts outright; a file carrying one (a
+/// deep part of the input, copied) gets the per-header checks, as the reader
+/// gives such files, and the deep flag.
+fn requirements(headers: &[Header]) -> exr::error::Result<Requirements> {
+    if !headers.iter().any(|h| h.deep) {
+        let mut requirements = MetaData::validate(headers, false)?;
+        requirements.file_format_version = 2;
+        return Ok(requirements);
+    }
+    let multipart = headers.len() > 1;
+    let mut long_names = false;
+    for header in headers {
+        header.validate(multipart, &mut long_names, false)?;
+    }
+    Ok(Requirements {
+        file_format_version: 2,
+        is_single_layer_and_tiled: false,
+        has_long_names: long_names,
+        has_deep_data: true,
+        has_multiple_layers: multipart,
+    })
 }
 
 /// `keyCode` as OpenEXR lays it out: seven little-endian ints.
