@@ -220,7 +220,9 @@ fn write_deep_tiled(path: &Path, width: usize, height: usize) {
                 let z = ((ty * tile + line) as f32).to_le_bytes();
                 (0..w).for_each(|_| samples.extend(z));
             }
-            [tx, ty, 0, 0].map(|v| file.extend((v as i32).to_le_bytes()));
+            for v in [tx, ty, 0, 0] {
+                file.extend((v as i32).to_le_bytes());
+            }
             for size in [table.len(), samples.len(), samples.len()] {
                 file.extend((size as u64).to_le_bytes());
             }
