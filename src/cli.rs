@@ -477,6 +477,11 @@ pub struct RunArgs {
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
     #[arg(long, value_parser = parse_rows)]
     pub rows: Option<(i32, i32)>,
+    /// Run the operation on every part of a multi-part input instead of one,
+    /// each part keeping its own channels, windows and attributes; for
+    /// operations of one input (specs/file-format.md, "Parts").
+    #[arg(long, conflicts_with = "rows")]
+    pub all_parts: bool,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]

@@ -272,6 +272,7 @@ pub fn run(command: Command) -> Result<()> {
             let run = RunArgs {
                 frames: run.frames.clone().or(plan.frames),
                 compression: run.compression.clone().or(plan.compression),
+                all_parts: run.all_parts || plan.all_parts,
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -304,6 +305,12 @@ pub fn run(command: Command) -> Result<()> {
         } => {
             let graph = Graph::chain(1, Vec::new());
             let layers = LayerArgs::default();
+            if run.all_parts {
+                return Err(Error::usage(
+                    "--all-parts runs an operation of one input on every part of it; deepmerge \
+                     reads several",
+                ));
+            }
             let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
             job.merged[0] = inputs[1..]
                 .iter()
@@ -456,6 +463,9 @@ fn input_job(
         None => vec![1],
     };
     check_frame_count(&frames, &output)?;
+    if run.all_parts {
+        check_all_parts(texts, &parts, layers)?;
+    }
     let resolved = resolve(&inputs, &frames, run.missing)?;
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
@@ -473,6 +483,7 @@ fn input_job(
         resume: run.resume,
         keep_going: run.keep_going,
         rows: run.rows,
+        all_parts: run.all_parts,
     };
     let summary = Summary {
         skipped: resolved.skipped,
@@ -480,6 +491,25 @@ fn input_job(
         ..Summary::default()
     };
     Ok((job, summary))
+}
+
+/// `--all-parts` runs a one-input operation on every part of that input:
+/// an operation of several inputs would have to pair parts across files, so
+/// it is refused, as is choosing a part or view as well.
+fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArgs) -> Result<()> {
+    if texts.len() != 1 {
+        return Err(Error::usage(format!(
+            "--all-parts runs an operation of one input on every part of it; this one reads {} \
+             inputs: choose their parts with FILE:PART or --part instead",
+            texts.len()
+        )));
+    }
+    if parts[0].is_some() || layers.view.is_some() {
+        return Err(Error::usage(
+            "--all-parts works on every part: give no FILE:PART, --part or --view with it",
+        ));
+    }
+    Ok(())
 }
 
 fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
@@ -494,6 +524,11 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
 }
 
 fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
+    if run.all_parts {
+        return Err(Error::usage(
+            "--all-parts needs an input: generate reads none",
+        ));
+    }
     let display = plate.display_window();
     Ok(Job {
         inputs: Vec::new(),
@@ -517,6 +552,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         resume: run.resume,
         keep_going: run.keep_going,
         rows: run.rows,
+        all_parts: false,
     })
 }
 

@@ -55,6 +55,7 @@ struct NodeSpec {
     all_layers: Option<bool>,
     view: Option<String>,
     compression: Option<String>,
+    all_parts: Option<bool>,
     radius: Option<u32>,
     filter: Option<Spanned<String>>,
     focus: Option<f32>,
@@ -88,6 +89,8 @@ pub struct JobPlan {
     pub header_from: usize,
     pub output: String,
     pub compression: Option<String>,
+    /// The write node's `all_parts`: the graph on every part of its read.
+    pub all_parts: bool,
     pub frames: Option<String>,
 }
 
@@ -343,6 +346,7 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
         graph: Graph::chain(reads.len(), graph_ops),
         output: beside(at.path, output),
         compression: nodes[write].get_ref().compression.clone(),
+        all_parts: nodes[write].get_ref().all_parts.unwrap_or(false),
         frames: file.frames,
     })
 }

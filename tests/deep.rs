@@ -137,3 +137,173 @@ fn any_command_flattens_deep_inputs_as_it_reads_them() {
     assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
     assert!(stderr(&out).contains("is not deep"), "{}", stderr(&out));
 }
+
+/// `oiiotool INPUT ARGS -o OUT`.
+fn oiiotool_write(oiio: &Path, input: &Path, args: &[&str], out: &Path) {
+    let status = Command::new(oiio)
+        .arg(input)
+        .args(args)
+        .arg("-o")
+        .arg(out)
+        .status()
+        .unwrap();
+    assert!(status.success(), "oiiotool {args:?}");
+}
+
+#[test]
+fn deep_tiles_and_many_line_deep_blocks_flatten_as_one_line_blocks_of_the_same_samples() {
+    let (Some(oiio), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {
+        return;
+    };
+    let Some(input) = pass("Trunks") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // The data window starts at row 141: tiles straddle it, and 17x23 tiles
+    // end cut short at the right and bottom.
+    let forms: [(&str, &[&str]); 4] = [
+        (
+            "tiled-32-zip",
+            &["--tile", "32", "32", "--compression", "zip"],
+        ),
+        (
+            "tiled-17x23-rle",
+            &["--tile", "17", "23", "--compression", "rle"],
+        ),
+        (
+            "tiled-64-none",
+            &["--tile", "64", "64", "--compression", "none"],
+        ),
+        ("scanline-zip", &["--compression", "zip"]),
+    ];
+    for (name, args) in forms {
+        let deep = d.join(format!("{name}.exr"));
+        oiiotool_write(&oiio, &input, args, &deep);
+        ok(&["info", s(&deep)]);
+        // The same samples in one-line ZIPS blocks, as oiiotool rewrites them.
+        let lines = d.join(format!("{name}-zips.exr"));
+        oiiotool_write(&oiio, &deep, &["--compression", "zips"], &lines);
+        let (ours, reference) = (d.join(format!("{name}-flat.exr")), d.join("ref.exr"));
+        ok(&[
+            "flatten",
+            s(&deep),
+            "-o",
+            s(&ours),
+            "-q",
+            "--strip-rows",
+            "7",
+        ]);
+        ok(&["flatten", s(&lines), "-o", s(&reference), "-q"]);
+        assert_identical(&read_image(&ours), &read_image(&reference));
+        let (ours_rgba, theirs) = (d.join("ours-rgba.exr"), d.join("theirs.exr"));
+        oiiotool_rgba(&oiio, &[s(&ours)], &ours_rgba);
+        oiiotool_rgba(&oiio, &[s(&deep), "--flatten"], &theirs);
+        assert_idiff_identical(&idiff, &ours_rgba, &theirs);
+    }
+}
+
+#[test]
+fn a_damaged_deep_tiled_file_is_refused_in_one_line() {
+    let Some(oiio) = peer("oiiotool") else { return };
+    let Some(input) = pass("Trunks") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let deep = d.join("tiled.exr");
+    oiiotool_write(
+        &oiio,
+        &input,
+        &["--tile", "32", "32", "--compression", "zip"],
+        &deep,
+    );
+    let bytes = std::fs::read(&deep).unwrap();
+    let out_dir = d.join("out");
+    std::fs::create_dir(&out_dir).unwrap();
+    // Bytes flipped across the chunk area (sizes, tables, samples), and
+    // the file cut short.
+    let mut damaged = Vec::new();
+    for at in [55, 70, 85, 99] {
+        let mut flipped = bytes.clone();
+        let from = bytes.len() * at / 100;
+        for b in &mut flipped[from..from + 16] {
+            *b ^= 0x5a;
+        }
+        damaged.push((format!("flipped-{at}.exr"), flipped));
+    }
+    damaged.push(("cut.exr".into(), bytes[..bytes.len() * 3 / 4].to_vec()));
+    for (name, data) in damaged {
+        let path = d.join(&name);
+        std::fs::write(&path, data).unwrap();
+        for command in ["info", "flatten"] {
+            let mut args = vec![command, s(&path)];
+            let out_path = out_dir.join("o.exr");
+            if command == "flatten" {
+                args.extend(["-o", s(&out_path), "-q"]);
+            }
+            let out = limited(&args);
+            let message = stderr(&out);
+            assert_eq!(out.status.code(), Some(3), "{name} {command}: {message}");
+            assert_eq!(message.lines().count(), 1, "{name} {command}: {message}");
+            assert!(message.contains(&name), "{name} {command}: {message}");
+            assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 0);
+        }
+    }
+}
+
+#[test]
+fn a_deep_part_is_carried_whole_and_flattened_with_all_parts() {
+    let (Some(oiio), Some(idiff), Some(multipart)) =
+        (peer("oiiotool"), peer("idiff"), peer("exrmultipart"))
+    else {
+        return;
+    };
+    let Some(input) = pass("Trunks") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // oiiotool writes no mixed deep and flat file: exrmultipart joins them.
+    let (flat, deep, both) = (d.join("flat.exr"), d.join("deep.exr"), d.join("both.exr"));
+    generate(&flat, "bg", (1024, 576), &[]);
+    oiiotool_write(
+        &oiio,
+        &input,
+        &["--tile", "32", "32", "--compression", "zip"],
+        &deep,
+    );
+    let status = Command::new(multipart)
+        .args(["-combine", "-i"])
+        .args([&flat, &deep])
+        .arg("-o")
+        .arg(&both)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    // The flat part worked on, the deep one carried: OpenEXR reads it back,
+    // the same samples.
+    let carried = d.join("carried.exr");
+    let part = format!("{}:0", s(&both));
+    ok(&[
+        "transcode",
+        &part,
+        "-o",
+        s(&carried),
+        "-q",
+        "--compression",
+        "piz",
+    ]);
+    ok(&["info", s(&carried)]);
+    let flattened = |file: &Path, name: &str| {
+        let out = d.join(name);
+        oiiotool_write(&oiio, file, &["--subimage", "1", "--flatten"], &out);
+        out
+    };
+    assert_idiff_identical(
+        &idiff,
+        &flattened(&both, "in.exr"),
+        &flattened(&carried, "out.exr"),
+    );
+    // With --all-parts the deep part comes out flattened, as `flatten` makes it.
+    let (all, alone) = (d.join("all.exr"), d.join("alone.exr"));
+    ok(&["transcode", s(&both), "-o", s(&all), "-q", "--all-parts"]);
+    ok(&["flatten", s(&deep), "-o", s(&alone), "-q"]);
+    let parts = read_parts(&all);
+    assert_eq!(parts.len(), 2);
+    assert_identical(&parts[1], &read_image(&alone));
+}

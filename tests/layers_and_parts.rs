@@ -364,3 +364,206 @@ fn unknown_views_and_parts_are_input_errors_listing_those_that_exist() {
     let (code, message) = over_itself(s(&mono), &out, &["--view", "left"]);
     assert_eq!(code, Some(0), "{message}");
 }
+
+/// The part names, compressions and data windows of `path`, as OpenEXR
+/// headers give them.
+fn part_headers(path: &Path) -> Vec<(String, String, String)> {
+    let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+    meta.headers
+        .iter()
+        .map(|h| {
+            let name = h.own_attributes.layer_name.as_ref().map(|n| n.to_string());
+            let window = h.data_window();
+            (
+                name.unwrap_or_default(),
+                format!("{:?}", h.compression),
+                format!("{:?} {:?}", window.position, window.size),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn all_parts_runs_a_one_input_operation_on_every_part() {
+    use exr::prelude::{Blocks, Compression, Encoding, LineOrder};
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let encoding = |compression, blocks| Encoding {
+        compression,
+        blocks,
+        line_order: LineOrder::Increasing,
+    };
+    let parts_in = [
+        random_rgba(71, 0, 0, 37, 29, Kind::Half, true),
+        random_rgba(72, 3, 2, 30, 21, Kind::Float, false),
+        random_rgba(73, 0, 5, 37, 20, Kind::Half, true),
+    ];
+    let encodings = [
+        encoding(Compression::ZIP16, Blocks::ScanLines),
+        encoding(Compression::PIZ, Blocks::Tiles(exr::math::Vec2(16, 8))),
+        encoding(Compression::RLE, Blocks::ScanLines),
+    ];
+    let names = ["beauty", "diffuse", "specular"];
+    let input = d.join("render.exr");
+    let list: Vec<_> = (0..3)
+        .map(|p| (names[p], "main", &parts_in[p], encodings[p]))
+        .collect();
+    write_encoded_parts(&input, &list);
+    let ok = |args: &[&str]| {
+        let out = run(args);
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+    };
+
+    // Per part, the reference: the operation on that part alone, a
+    // single-part file of the same pixels and encoding.
+    for op in [&["premult"][..], &["blur", "--radius", "2"], &["transcode"]] {
+        let output = d.join(format!("{}-all.exr", op[0]));
+        let mut args = op.to_vec();
+        args.extend([s(&input), "-o", s(&output), "-q", "--all-parts"]);
+        args.extend(["--compression", "zips"]);
+        ok(&args);
+        assert_peers_read(&output);
+        let parts = read_parts(&output);
+        assert_eq!(parts.len(), 3, "{op:?}");
+        let headers = part_headers(&output);
+        let headers_in = part_headers(&input);
+        for p in 0..3 {
+            let single = d.join(format!("part{p}.exr"));
+            write_encoded_parts(&single, &[list[p]]);
+            let reference = d.join(format!("{}-{p}.exr", op[0]));
+            let mut args = op.to_vec();
+            args.extend([s(&single), "-o", s(&reference), "-q"]);
+            ok(&args);
+            assert_identical(&parts[p], &read_image(&reference));
+            // Its own name and window; every part written as asked.
+            assert_eq!(headers[p].0, headers_in[p].0);
+            assert_eq!(headers[p].2, headers_in[p].2);
+            assert_eq!(headers[p].1, "ZIP1", "{op:?} part {p}");
+        }
+        if op[0] == "transcode" {
+            (0..3).for_each(|p| {
+                assert_identical(&parts[p], &read_image(&d.join(format!("part{p}.exr"))))
+            });
+            if let Some(idiff) = peer("idiff") {
+                let out = std::process::Command::new(idiff)
+                    .args(["-a", "-fail", "0"])
+                    .arg(&input)
+                    .arg(&output)
+                    .output()
+                    .unwrap();
+                assert!(
+                    out.status.success(),
+                    "{}",
+                    String::from_utf8_lossy(&out.stdout)
+                );
+            }
+        }
+    }
+
+    // A multi-part file made by oiiotool from two of the parts; the
+    // references are its parts as oiiotool extracts them.
+    if let Some(oiio) = peer("oiiotool") {
+        let oiiotool = |args: &[&str]| {
+            let status = std::process::Command::new(&oiio)
+                .args(args)
+                .status()
+                .unwrap();
+            assert!(status.success(), "oiiotool {args:?}");
+        };
+        let (made, output) = (d.join("oiio.exr"), d.join("oiio-all.exr"));
+        let (part0, part2) = (d.join("part0.exr"), d.join("part2.exr"));
+        oiiotool(&[s(&part0), s(&part2), "--siappendall", "-o", s(&made)]);
+        ok(&[
+            "blur",
+            s(&made),
+            "-o",
+            s(&output),
+            "-q",
+            "--all-parts",
+            "--radius",
+            "1",
+        ]);
+        let parts = read_parts(&output);
+        assert_eq!(parts.len(), 2);
+        for (p, part) in parts.iter().enumerate() {
+            let (single, reference) = (d.join("single.exr"), d.join("reference.exr"));
+            oiiotool(&[s(&made), "--subimage", &p.to_string(), "-o", s(&single)]);
+            ok(&[
+                "blur",
+                s(&single),
+                "-o",
+                s(&reference),
+                "-q",
+                "--radius",
+                "1",
+            ]);
+            assert_identical(part, &read_image(&reference));
+        }
+    }
+
+    // The job file's write node takes `all_parts`: the same bytes.
+    let job = d.join("job.toml");
+    std::fs::write(
+        &job,
+        "[[node]]\nname = \"in\"\nread = \"render.exr\"\n\n[[node]]\nname = \"p\"\nop = \"premult\"\n\
+         inputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"job-all.exr\"\ninputs = [\"p\"]\n\
+         compression = \"zips\"\nall_parts = true\n",
+    )
+    .unwrap();
+    ok(&["run", s(&job), "-q"]);
+    assert_eq!(
+        std::fs::read(d.join("job-all.exr")).unwrap(),
+        std::fs::read(d.join("premult-all.exr")).unwrap()
+    );
+}
+
+#[test]
+fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let beauty = random_rgba(81, 0, 0, 24, 16, Kind::Half, true);
+    let mut depth = beauty.clone();
+    depth.channels.retain(|name, _| name == "Z");
+    let input = d.join("render.exr");
+    write_parts(
+        &input,
+        &[("beauty", "main", &beauty), ("depth", "main", &depth)],
+    );
+    let out_dir = d.join("out");
+    std::fs::create_dir(&out_dir).unwrap();
+    let output = out_dir.join("o.exr");
+    // premult of a part without colour: the part is named, nothing written.
+    let out = run(&["premult", s(&input), "-o", s(&output), "--all-parts"]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(message.contains("part 1 ('depth')"), "{message}");
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 0);
+    // transcode takes it, every part kept.
+    let out = run(&[
+        "transcode",
+        s(&input),
+        "-o",
+        s(&output),
+        "--all-parts",
+        "-q",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(read_parts(&output).len(), 2);
+    // Operations of two inputs, a part chosen as well, a band: usage errors.
+    let input_part = format!("{}:depth", s(&input));
+    let refused: [&[&str]; 4] = [
+        &["over", s(&input), s(&input)],
+        &["deepmerge", s(&input), s(&input)],
+        &["transcode", &input_part],
+        &["transcode", s(&input), "--rows", "0-16"],
+    ];
+    for args in refused {
+        let mut args = args.to_vec();
+        args.extend(["-o", s(&output), "--all-parts"]);
+        let out = run(&args);
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {message}");
+        assert!(message.contains("all-parts"), "{args:?}: {message}");
+    }
+}

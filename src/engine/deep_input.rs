@@ -1,15 +1,17 @@
-//! Deep scanline inputs, flattened as they are read: the samples of one or
-//! more deep files (a deep merge) are put in depth order per pixel and
-//! composited front to back into flat rows, strip by strip, so the rest of
-//! the engine sees an ordinary input. specs/ops.md, "Deep data".
+//! Deep inputs, scanline or tiled, flattened as they are read: the samples
+//! of one or more deep files (a deep merge) are put in depth order per pixel
+//! and composited front to back into flat rows, strip by strip, so the rest
+//! of the engine sees an ordinary input. A file's chunks are read a block
+//! row at a time (a scanline block, or a row of tiles across the level),
+//! so memory stays flat in height. specs/ops.md, "Deep data".
 
 use super::graph::union;
 use super::plan::MAX_STRIP_BYTES;
 use super::strip::Rows;
 use crate::error::Result;
-use crate::io::deep::{decode_deep_scanline, DeepBlock};
+use crate::io::deep::{decode_deep, DeepBlock, DeepChunk};
 use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
-use exr::block::chunk::{CompressedBlock, CompressedDeepScanLineBlock as DeepChunk};
+use crate::io::tiles::Level;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
 use rayon::prelude::*;
@@ -34,8 +36,9 @@ pub fn flat_channels(file: &ExrFile, part: usize) -> Vec<ChannelDescription> {
 /// several times more.
 const MAX_DEEP_CHUNK_BYTES: usize = MAX_BLOCK_BYTES;
 
-/// Per file, chunks read (still compressed) with their indices, in order.
-type ChunksRead = Vec<Vec<(usize, DeepChunk)>>;
+/// Per file, chunks read (still compressed) with their block rows and
+/// indices, in order.
+type ChunksRead = Vec<Vec<(usize, usize, DeepChunk)>>;
 
 /// One sample of a pixel being flattened: depth, alpha, file, block, index.
 type SortEntry = (f32, f32, usize, usize, usize);
@@ -43,6 +46,8 @@ type SortEntry = (f32, f32, usize, usize, usize);
 pub struct DeepInput {
     /// The files merged, with the part read from each.
     pub files: Vec<(Arc<ExrFile>, usize)>,
+    /// Per file, the level read (a scanline part's only one).
+    levels: Vec<Level>,
     /// Output channels (the first file's, flattened).
     pub channels: Vec<ChannelDescription>,
     /// The union of the files' data windows.
@@ -56,25 +61,29 @@ struct ChannelMap {
     alpha: Option<usize>,
 }
 
-/// One file's decoded blocks for a strip: lines per block, the first
-/// block's index, and them.
+/// One file's decoded blocks for a strip: whole block rows of its level
+/// from `first_row` on, row by row, left to right.
 struct Blocks {
-    lines: usize,
-    first: usize,
+    level: Level,
+    window: IntegerBounds,
+    first_row: usize,
     blocks: Vec<DeepBlock>,
 }
 
 impl DeepInput {
-    pub fn new(files: Vec<(Arc<ExrFile>, usize)>) -> Self {
+    /// Merges `files`, reading `levels` of them (one each).
+    pub fn new(files: Vec<(Arc<ExrFile>, usize)>, levels: Vec<Level>) -> Self {
         let (first, part) = &files[0];
         let channels = flat_channels(first, *part);
         let window = files
             .iter()
-            .map(|(f, p)| f.header(*p).data_window())
+            .zip(&levels)
+            .map(|((f, p), l)| l.window(f.header(*p)))
             .reduce(union)
             .expect("at least one file");
         DeepInput {
             files,
+            levels,
             channels,
             window,
         }
@@ -119,8 +128,9 @@ impl DeepInput {
             let decoded: Vec<Blocks> = self
                 .files
                 .iter()
+                .zip(&self.levels)
                 .zip(chunks)
-                .map(|((file, part), chunks)| decode_blocks(file, *part, chunks))
+                .map(|(((file, part), level), chunks)| decode_blocks(file, *part, *level, chunks))
                 .collect::<Result<_>>()?;
             self.flatten(columns, y..end, &decoded, &maps, &mut out);
             y = end;
@@ -132,8 +142,7 @@ impl DeepInput {
     /// at most `MAX_STRIP_BYTES` together, at least row `top`'s; and per
     /// file, those chunks read (still compressed), in order.
     fn batch(&self, top: i32, bottom: i32) -> Result<(i32, ChunksRead)> {
-        let mut chunks: Vec<Vec<(usize, DeepChunk)>> =
-            self.files.iter().map(|_| Vec::new()).collect();
+        let mut chunks: ChunksRead = self.files.iter().map(|_| Vec::new()).collect();
         let mut cost = 0;
         let mut end = top;
         while end < bottom {
@@ -141,34 +150,36 @@ impl DeepInput {
             let mut added = Vec::new();
             let mut row_cost = 0;
             for (f, (file, part)) in self.files.iter().enumerate() {
-                let header = file.header(*part);
-                let window = header.data_window();
+                let level = self.levels[f];
+                let window = level.window(file.header(*part));
                 if end < window.position.y() || end >= window.end().y() {
                     continue;
                 }
-                let k = (end - window.position.y()) as usize
-                    / header.compression.scan_lines_per_block();
-                if chunks[f].last().is_some_and(|(j, _)| *j == k) {
+                let row = (end - window.position.y()) as usize / level.block.y();
+                if chunks[f].last().is_some_and(|(r, _, _)| *r == row) {
                     continue;
                 }
-                let block = read_deep_chunk(file, *part, k)?;
-                let bytes = decoded_bytes(header, &block);
-                if bytes > MAX_DEEP_CHUNK_BYTES {
-                    return Err(file.error(format!(
-                        "deep chunk {k}: its {} bytes of samples would take {bytes} bytes \
-                         decoded and sorted, over the {MAX_DEEP_CHUNK_BYTES}-byte limit",
-                        block.decompressed_sample_data_size
-                    )));
+                for column in 0..level.blocks.x() {
+                    let k = level.chunk(column, row);
+                    let chunk = file.read_deep_chunk(*part, k)?;
+                    let bytes = decoded_bytes(file.header(*part), &chunk);
+                    if bytes > MAX_DEEP_CHUNK_BYTES {
+                        return Err(file.error(format!(
+                            "deep chunk {k}: its {} bytes of samples would take {bytes} bytes \
+                             decoded and sorted, over the {MAX_DEEP_CHUNK_BYTES}-byte limit",
+                            chunk.unpacked
+                        )));
+                    }
+                    row_cost += bytes;
+                    added.push((f, row, k, chunk));
                 }
-                row_cost += bytes;
-                added.push((f, k, block));
             }
             if end > top && cost + row_cost > MAX_STRIP_BYTES {
                 break;
             }
             cost += row_cost;
-            for (f, k, block) in added {
-                chunks[f].push((k, block));
+            for (f, row, k, chunk) in added {
+                chunks[f].push((row, k, chunk));
             }
             end += 1;
         }
@@ -198,9 +209,8 @@ impl DeepInput {
             for i in 0..columns.1 {
                 let x = columns.0 + i as i32;
                 samples.clear();
-                for (f, ((file, part), blocks)) in self.files.iter().zip(decoded).enumerate() {
-                    let Some((b, pixel)) = locate(file.header(*part).data_window(), blocks, x, y)
-                    else {
+                for (f, blocks) in decoded.iter().enumerate() {
+                    let Some((b, pixel)) = locate(blocks, x, y) else {
                         continue;
                     };
                     let block = &blocks.blocks[b];
@@ -244,48 +254,47 @@ impl DeepInput {
     }
 }
 
-/// Deep chunk `k` of `file`'s `part`, read but not unpacked.
-fn read_deep_chunk(file: &ExrFile, part: usize, k: usize) -> Result<DeepChunk> {
-    match file.read_chunk(part, k)?.compressed_block {
-        CompressedBlock::DeepScanLine(block) => Ok(block),
-        _ => Err(file.error(format!("chunk {k} is not a deep scanline chunk"))),
-    }
-}
-
 /// What decoding and flattening a deep chunk takes at most, from the sizes it
 /// declares: its samples unpacked, as f32 per channel, and a sort entry each
 /// (a pixel may hold them all); its offset table unpacked and as starts.
-fn decoded_bytes(header: &Header, block: &DeepChunk) -> usize {
-    let unpacked = block.decompressed_sample_data_size;
+fn decoded_bytes(header: &Header, chunk: &DeepChunk) -> usize {
+    let unpacked = chunk.unpacked;
     let samples = unpacked / header.channels.bytes_per_pixel.max(1);
     let per_sample = 4 * header.channels.list.len() + std::mem::size_of::<SortEntry>();
-    let pixels = header.data_window().size.width() * header.compression.scan_lines_per_block();
+    let pixels = chunk.bounds.size.area();
     unpacked
         .saturating_add(samples.saturating_mul(per_sample))
         .saturating_add(pixels.saturating_mul(4 + std::mem::size_of::<usize>()))
 }
 
-/// Decodes, in parallel, `chunks` (consecutive, in order) of `file`.
-fn decode_blocks(file: &ExrFile, part: usize, chunks: Vec<(usize, DeepChunk)>) -> Result<Blocks> {
+/// Decodes, in parallel, `chunks` (whole block rows of `level`, in order)
+/// of `file`.
+fn decode_blocks(
+    file: &ExrFile,
+    part: usize,
+    level: Level,
+    chunks: Vec<(usize, usize, DeepChunk)>,
+) -> Result<Blocks> {
     let header = file.header(part);
-    let first = chunks.first().map_or(0, |(k, _)| *k);
+    let first_row = chunks.first().map_or(0, |(row, _, _)| *row);
     let blocks = chunks
         .into_par_iter()
-        .map(|(k, block)| {
-            decode_deep_scanline(header, &block)
-                .map_err(|m| file.error(format!("deep chunk {k}: {m}")))
+        .map(|(_, k, chunk)| {
+            decode_deep(header, &chunk).map_err(|m| file.error(format!("deep chunk {k}: {m}")))
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Blocks {
-        lines: header.compression.scan_lines_per_block(),
-        first,
+        level,
+        window: level.window(header),
+        first_row,
         blocks,
     })
 }
 
-/// Which decoded block holds row `y` of a file, and the index of pixel
-/// (x, y) in it; `None` outside the file's data window.
-fn locate(window: IntegerBounds, blocks: &Blocks, x: i32, y: i32) -> Option<(usize, usize)> {
+/// Which decoded block holds pixel (x, y) of a file, and the pixel's index
+/// in it; `None` outside the file's data window.
+fn locate(blocks: &Blocks, x: i32, y: i32) -> Option<(usize, usize)> {
+    let (window, level) = (blocks.window, blocks.level);
     let inside = x >= window.position.x()
         && x < window.end().x()
         && y >= window.position.y()
@@ -293,8 +302,12 @@ fn locate(window: IntegerBounds, blocks: &Blocks, x: i32, y: i32) -> Option<(usi
     if !inside {
         return None;
     }
-    let k = ((y - window.position.y()) as usize / blocks.lines).checked_sub(blocks.first)?;
+    let row =
+        ((y - window.position.y()) as usize / level.block.y()).checked_sub(blocks.first_row)?;
+    let column = (x - window.position.x()) as usize / level.block.x();
+    let k = row * level.blocks.x() + column;
     let block = blocks.blocks.get(k)?;
-    let pixel = (y - block.y) as usize * window.size.width() + (x - window.position.x()) as usize;
+    let at = block.bounds.position;
+    let pixel = (y - at.y()) as usize * block.bounds.size.width() + (x - at.x()) as usize;
     Some((k, pixel))
 }

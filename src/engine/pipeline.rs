@@ -8,7 +8,7 @@ use super::decode::{decode_all, InputCursor};
 use super::encode::{encode_rows, IndexedChunk};
 use super::interrupt;
 use super::passthrough::PassThrough;
-use super::plan::{plan_frame, FramePlan, FrameSources, Job};
+use super::plan::{plan_parts, FramePlan, FrameSources, Job};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
@@ -23,6 +23,9 @@ const CHANNEL_STRIPS: usize = 1;
 
 enum Msg<T> {
     Begin(Arc<FramePlan>),
+    /// The next part of the frame begun (`--all-parts`): its strips follow,
+    /// into the same output file.
+    Part(Arc<FramePlan>),
     Strip(T),
     End,
     /// The frame begun is abandoned (bad input with --keep-going, or an
@@ -52,6 +55,14 @@ struct Decoded {
 struct Composed {
     rows: Rows,
     passed: Vec<IndexedChunk>,
+}
+
+/// A Begin or Part for the next stage, with `plan`.
+fn relay<T, U>(msg: &Msg<T>, plan: Arc<FramePlan>) -> Msg<U> {
+    match msg {
+        Msg::Part(_) => Msg::Part(plan),
+        _ => Msg::Begin(plan),
+    }
 }
 
 /// Receiving side of a stage: `None` once the upstream stage has stopped.
@@ -119,14 +130,33 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
     Ok(())
 }
 
-/// Sends one frame downstream; `Ok(false)` when it had to stop part-way.
+/// Sends one frame downstream, part after part (one, but with
+/// `--all-parts`); `Ok(false)` when it had to stop part-way.
 fn decode_frame(
     job: &Job,
     sources: &FrameSources,
     tx: &Sender<Msg<Decoded>>,
     begun: &mut bool,
 ) -> Result<bool> {
-    let plan = Arc::new(plan_frame(job, sources)?);
+    for plan in plan_parts(job, sources)? {
+        let plan = Arc::new(plan);
+        let msg = match *begun {
+            false => Msg::Begin(plan.clone()),
+            true => Msg::Part(plan.clone()),
+        };
+        if !send(tx, msg) {
+            return Ok(false);
+        }
+        *begun = true;
+        if !decode_part(job, &plan, tx)? {
+            return Ok(false);
+        }
+    }
+    Ok(send(tx, Msg::End))
+}
+
+/// Sends the strips of one planned part; `Ok(false)` when it had to stop.
+fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> Result<bool> {
     let mut cursors: Vec<InputCursor> = plan
         .inputs
         .iter()
@@ -138,17 +168,13 @@ fn decode_frame(
         .collect();
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());
-    let pass = PassThrough::find(&job.graph, &plan);
-    if !send(tx, Msg::Begin(plan.clone())) {
-        return Ok(false);
-    }
-    *begun = true;
+    let pass = PassThrough::find(&job.graph, plan);
     for rows in plan.strips() {
         if interrupt::requested() {
             return Ok(false);
         }
         let (strips, passed) = match &pass {
-            Some(pass) => pass.decode(&plan, &job.graph, &mut cursors, columns, rows.clone())?,
+            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone())?,
             None => (decode_all(&mut cursors, columns, rows.clone())?, Vec::new()),
         };
         let decoded = Decoded {
@@ -160,7 +186,7 @@ fn decode_frame(
             return Ok(false);
         }
     }
-    Ok(send(tx, Msg::End))
+    Ok(true)
 }
 
 /// Whether `path` holds a complete EXR file: a valid header and offset table,
@@ -180,7 +206,7 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
     let mut written = IntegerBounds::zero();
     while let Some(msg) = receive(&rx) {
         let out = match msg {
-            Msg::Begin(plan) => {
+            Msg::Begin(ref plan) | Msg::Part(ref plan) => {
                 frame = plan.frame;
                 written = plan.window();
                 lines = plan.header.compression.scan_lines_per_block();
@@ -192,7 +218,7 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                     &plan.windows,
                     lines,
                 ));
-                Msg::Begin(plan)
+                relay(&msg, plan.clone())
             }
             Msg::Strip(decoded) => {
                 let composer = composer
@@ -253,9 +279,9 @@ fn encode_stage(
     let mut plan: Option<Arc<FramePlan>> = None;
     while let Some(msg) = receive(&rx) {
         let out = match msg {
-            Msg::Begin(p) => {
+            Msg::Begin(ref p) | Msg::Part(ref p) => {
                 plan = Some(p.clone());
-                Msg::Begin(p)
+                relay(&msg, p.clone())
             }
             Msg::Strip(composed) => {
                 let plan = plan
@@ -286,15 +312,19 @@ fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Re
             _ => return Err(Error::internal("frame data without a frame")),
         };
         let mut abandoned = false;
-        let next = || match receive(&rx) {
-            Some(Msg::Strip(chunks)) => Ok(Some(chunks)),
-            Some(Msg::End) => Ok(None),
-            Some(Msg::Abort) => {
-                abandoned = true;
-                Err(Error::stopped())
-            }
-            Some(Msg::Begin(_)) => Err(Error::internal("frame begun inside a frame")),
-            None => Err(Error::stopped()),
+        // The writer tells a frame's parts apart by their chunk counts.
+        let next = || loop {
+            return match receive(&rx) {
+                Some(Msg::Strip(chunks)) => Ok(Some(chunks)),
+                Some(Msg::Part(_)) => continue,
+                Some(Msg::End) => Ok(None),
+                Some(Msg::Abort) => {
+                    abandoned = true;
+                    Err(Error::stopped())
+                }
+                Some(Msg::Begin(_)) => Err(Error::internal("frame begun inside a frame")),
+                None => Err(Error::stopped()),
+            };
         };
         match write_file(&plan.output, plan.label, plan.output_parts(), next) {
             Ok(()) => events.written(&plan),

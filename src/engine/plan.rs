@@ -59,6 +59,9 @@ pub struct Job {
     pub keep_going: bool,
     /// Write only rows `y0..y1` of each frame (a band, for `stitch`).
     pub rows: Option<(i32, i32)>,
+    /// Run the graph on every part of the one input, one after the other,
+    /// into the parts of one output (`--all-parts`).
+    pub all_parts: bool,
 }
 
 /// One output frame and, per input, the frame it reads.
@@ -140,19 +143,29 @@ pub struct FramePlan {
     /// The input whose other parts the output keeps, copied as they are:
     /// the header's input when it has several parts.
     pub carried: Option<usize>,
+    /// With `--all-parts`, on the first part's plan: every part's output
+    /// header, each part planned and streamed in turn (`plan_parts`).
+    pub every_part: Option<Vec<Header>>,
 }
 
 impl FramePlan {
     /// The parts to write: the header's input's parts with the written part
     /// in its place, or the written part alone.
     pub fn output_parts(&self) -> Parts<'_> {
+        if let Some(headers) = &self.every_part {
+            return Parts {
+                headers: headers.clone(),
+                streamed: (0..headers.len()).collect(),
+                carried: None,
+            };
+        }
         match self.carried {
             Some(i) => {
                 let mut headers = self.inputs[i].meta.headers.to_vec();
                 headers[self.parts[i]] = self.header.clone();
                 Parts {
                     headers,
-                    streamed: self.parts[i],
+                    streamed: vec![self.parts[i]],
                     carried: Some(&self.inputs[i]),
                 }
             }
@@ -184,8 +197,41 @@ impl FramePlan {
     }
 }
 
-/// Opens the inputs of `sources.frame` and plans its output.
-pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
+/// The plans of `sources.frame`: one, or with `--all-parts` one per part of
+/// the input, in part order, the first holding every part's header. A part
+/// that cannot be planned is an error naming it.
+pub fn plan_parts(job: &Job, sources: &FrameSources) -> Result<Vec<FramePlan>> {
+    if !job.all_parts {
+        return Ok(vec![plan_frame(job, sources, None)?]);
+    }
+    let at = sources.inputs[0].file_frame();
+    let headers = ExrFile::open(&job.inputs[0].path(at), job.frame_label(at))?
+        .meta
+        .headers;
+    let mut plans = (0..headers.len())
+        .map(|part| {
+            plan_frame(job, sources, Some(part)).map_err(|e| in_part(e, part, &headers[part]))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    plans[0].every_part = Some(plans.iter().map(|p| p.header.clone()).collect());
+    Ok(plans)
+}
+
+/// `error` of `--all-parts` on `part`, naming the part.
+fn in_part(error: Error, part: usize, header: &Header) -> Error {
+    let name = header
+        .own_attributes
+        .layer_name
+        .as_ref()
+        .map(|n| format!(" ('{n}')"))
+        .unwrap_or_default();
+    Error::new(error.kind, format!("part {part}{name}: {}", error.message))
+}
+
+/// Opens the inputs of `sources.frame` and plans its output; `part` forces
+/// the part of input 0 read (`--all-parts`).
+fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<FramePlan> {
+    let forced = part;
     let frame = sources.frame;
     let label = job.frame_label(frame);
     let mut parts = Vec::new();
@@ -197,7 +243,10 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         .map(|(i, (pattern, source))| {
             let at = source.file_frame();
             let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
-            let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?;
+            let part = match forced.filter(|_| i == 0) {
+                Some(part) => part,
+                None => choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?,
+            };
             check_readable(&file, part)?;
             parts.push(part);
             Ok(Arc::new(file))
@@ -282,7 +331,8 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
     let carried = match job.header_base {
         HeaderBase::Input(i)
             if inputs[i].meta.headers.len() > 1
-                && matches!(sources.inputs[i], Source::Frame(_)) =>
+                && matches!(sources.inputs[i], Source::Frame(_))
+                && !job.all_parts =>
         {
             Some(i)
         }
@@ -384,6 +434,7 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
         strip_rows: blocks * lines,
         computed,
         carried,
+        every_part: None,
     })
 }
 
@@ -470,6 +521,7 @@ fn deep_input(
     }
     let at = sources.inputs[i].file_frame();
     let mut files = vec![(file.clone(), part)];
+    let mut levels = vec![input_level(job, file, part)?];
     for pattern in merged {
         let other = Arc::new(ExrFile::open(&pattern.path(at), job.frame_label(at))?);
         let part = choose_part(&other, None, job.view.as_deref())?;
@@ -477,20 +529,16 @@ fn deep_input(
         if !other.header(part).deep {
             return Err(other.error("is not deep: deepmerge takes deep files only"));
         }
+        levels.push(input_level(job, &other, part)?);
         files.push((other, part));
     }
-    Ok(Some(Arc::new(DeepInput::new(files))))
+    Ok(Some(Arc::new(DeepInput::new(files, levels))))
 }
 
-/// What the engine reads: flat scanlines or tiles, deep scanlines, no
+/// What the engine reads: flat or deep, scanlines or tiles, no
 /// subsampling.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
-    if header.deep && header.blocks.has_tiles() {
-        return Err(file.error(
-            "deep tiled files are not supported yet: only deep scanlines (flat tiled files are read)",
-        ));
-    }
     if let Some(c) = header
         .channels
         .list

@@ -5,11 +5,13 @@
 //! cut short by another process while we read it is an input error, where a
 //! memory map would kill the process with SIGBUS.
 
+use super::deep::DeepChunk;
 use super::{tiles, zip};
 use crate::error::{Error, Result};
 use crate::guard::catch_panic;
 use exr::block::chunk::{
-    Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
+    Chunk, CompressedBlock, CompressedDeepScanLineBlock, CompressedDeepTileBlock,
+    CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
 };
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
@@ -202,7 +204,11 @@ impl ExrFile {
             .read_chunk_bytes(part, index)
             .map_err(|m| damaged(&m))?;
         let header = self.header(part);
-        let chunk = if header.deep || header.blocks.has_tiles() {
+        let chunk = if header.deep {
+            // Read here, not by `Chunk::read`, which caps a deep tile's
+            // samples at a flat tile's size.
+            deep_chunk(part, header.blocks.has_tiles(), &fields, data).map_err(|m| damaged(&m))?
+        } else if header.blocks.has_tiles() {
             let bytes = [fields, data].concat();
             catch_panic(|| Chunk::read(&mut &bytes[..], &self.meta))
                 .map_err(|p| {
@@ -230,9 +236,14 @@ impl ExrFile {
                 chunk.layer_index
             )));
         }
-        if let CompressedBlock::Tile(tile) = &chunk.compressed_block {
+        let tile = match &chunk.compressed_block {
+            CompressedBlock::Tile(tile) => Some(tile.coordinates),
+            CompressedBlock::DeepTile(tile) => Some(tile.coordinates),
+            _ => None,
+        };
+        if let Some(coordinates) = tile {
             let expected = tiles::block_at(header, index).expect("one table entry per block");
-            if tile.coordinates != expected {
+            if coordinates != expected {
                 let show = |t: &TileCoordinates| {
                     format!(
                         "tile {},{} of level {},{}",
@@ -244,7 +255,7 @@ impl ExrFile {
                 };
                 return Err(self.error(format!(
                     "chunk {index} at byte {offset} holds {} instead of {}",
-                    show(&tile.coordinates),
+                    show(&coordinates),
                     show(&expected)
                 )));
             }
@@ -431,16 +442,20 @@ impl ExrFile {
         Ok(block)
     }
 
-    /// Checks a deep chunk's structure (tiled deep chunks: presence only).
+    /// Deep chunk `index` of `part`, read but not unpacked.
+    pub fn read_deep_chunk(&self, part: usize, index: usize) -> Result<DeepChunk> {
+        let block = self.read_chunk(part, index)?.compressed_block;
+        DeepChunk::new(self.header(part), block)
+            .map_err(|m| self.error(format!("deep chunk {index}: {m}")))?
+            .ok_or_else(|| self.error(format!("chunk {index} is not a deep chunk")))
+    }
+
+    /// Checks a deep chunk's structure.
     pub fn check_deep_chunk(&self, part: usize, index: usize) -> Result<()> {
-        match self.read_chunk(part, index)?.compressed_block {
-            CompressedBlock::DeepScanLine(block) => {
-                catch_panic(|| super::deep::check_deep_scanline(self.header(part), &block))
-                    .unwrap_or_else(|p| Err(format!("decoder panic: {p}")))
-                    .map_err(|m| self.error(format!("deep chunk {index}: {m}")))
-            }
-            _ => Ok(()),
-        }
+        let chunk = self.read_deep_chunk(part, index)?;
+        catch_panic(|| chunk.check(self.header(part)))
+            .unwrap_or_else(|p| Err(format!("decoder panic: {p}")))
+            .map_err(|m| self.error(format!("deep chunk {index}: {m}")))
     }
 
     /// Decodes every chunk of `part` (deep chunks: checks their structure), in
@@ -456,6 +471,50 @@ impl ExrFile {
                 }
             })
     }
+}
+
+/// A deep chunk of `part` from its fixed fields (part number if any,
+/// coordinates, then the offset table's and the samples' packed sizes and
+/// the samples' unpacked size, as u64) and its data (the packed table, then
+/// the packed samples), as `read_chunk_bytes` reads them.
+fn deep_chunk(
+    part: usize,
+    tiled: bool,
+    fields: &[u8],
+    mut data: Vec<u8>,
+) -> std::result::Result<Chunk, String> {
+    let int = |at: usize| i32::from_le_bytes(fields[at..at + 4].try_into().expect("4 bytes"));
+    let long = |at: usize| u64::from_le_bytes(fields[at..at + 8].try_into().expect("8 bytes"));
+    let sizes = fields.len() - 24;
+    let table_size = usize::try_from(long(sizes)).map_err(|_| "table size overflows")?;
+    let unpacked = usize::try_from(long(sizes + 16)).map_err(|_| "sample size overflows")?;
+    let samples = data.split_off(table_size.min(data.len()));
+    let table = data.into_iter().map(|b| b as i8).collect();
+    let compressed_block = match tiled {
+        false => CompressedBlock::DeepScanLine(CompressedDeepScanLineBlock {
+            y_coordinate: int(sizes - 4),
+            decompressed_sample_data_size: unpacked,
+            compressed_pixel_offset_table: table,
+            compressed_sample_data_le: samples,
+        }),
+        true => {
+            let at = sizes - 16;
+            let index = |at: usize| usize::try_from(int(at)).map_err(|_| "negative tile index");
+            CompressedBlock::DeepTile(CompressedDeepTileBlock {
+                coordinates: TileCoordinates {
+                    tile_index: Vec2(index(at)?, index(at + 4)?),
+                    level_index: Vec2(index(at + 8)?, index(at + 12)?),
+                },
+                decompressed_sample_data_size: unpacked,
+                compressed_pixel_offset_table: table,
+                compressed_sample_data_le: samples,
+            })
+        }
+    };
+    Ok(Chunk {
+        layer_index: part,
+        compressed_block,
+    })
 }
 
 /// `len` bytes of `file` from byte `at`. The offsets were checked against the

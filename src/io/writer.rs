@@ -10,9 +10,9 @@
 use super::reader::ExrFile;
 use crate::engine::encode::IndexedChunk;
 use crate::error::{Error, Result};
-use exr::meta::attribute::{AttributeValue, KeyCode};
+use exr::meta::attribute::{AttributeValue, BlockType, KeyCode};
 use exr::meta::header::Header;
-use exr::meta::MetaData;
+use exr::meta::{MetaData, Requirements};
 use std::fs::{self, File};
 use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -54,13 +54,13 @@ pub fn remove_stale_temporaries(dir: &Path) {
     }
 }
 
-/// The parts of a file to write: `headers[streamed]` is the part whose
-/// chunks arrive through `next`; every other part is copied chunk for chunk,
-/// decoding nothing, from the same part of `carried` (the input whose other
-/// parts the output keeps).
+/// The parts of a file to write: the parts `streamed` are those whose
+/// chunks arrive through `next`, one part after the other in this order;
+/// every other part is copied chunk for chunk, decoding nothing, from the
+/// same part of `carried` (the input whose other parts the output keeps).
 pub struct Parts<'a> {
     pub headers: Vec<Header>,
-    pub streamed: usize,
+    pub streamed: Vec<usize>,
     pub carried: Option<&'a ExrFile>,
 }
 
@@ -68,7 +68,7 @@ impl Parts<'_> {
     pub fn single(header: Header) -> Self {
         Parts {
             headers: vec![header],
-            streamed: 0,
+            streamed: vec![0],
             carried: None,
         }
     }
@@ -106,32 +106,45 @@ pub fn write_file(
             .iter()
             .map(|h| Vec::with_capacity(h.chunk_count))
             .collect();
-        let streamed = parts.streamed;
-        let chunk_count = headers[streamed].chunk_count;
+        let streamed = &parts.streamed;
+        // The streamed part being written: the first not yet complete.
+        let mut current = 0;
         while let Some(chunks) = next()? {
             for mut c in chunks {
-                let done = &mut offsets[streamed];
-                if c.index != done.len() || c.index >= chunk_count {
+                while streamed
+                    .get(current)
+                    .is_some_and(|&p| offsets[p].len() == headers[p].chunk_count)
+                {
+                    current += 1;
+                }
+                let Some(&part) = streamed.get(current) else {
+                    return Err(Error::internal("a chunk arrived after the last part's"));
+                };
+                let done = &mut offsets[part];
+                if c.index != done.len() {
                     return Err(Error::internal(format!(
-                        "chunk {} arrived where chunk {} of {chunk_count} was due",
+                        "chunk {} of part {part} arrived where chunk {} was due",
                         c.index,
                         done.len()
                     )));
                 }
                 done.push(out.position);
-                c.chunk.layer_index = streamed;
+                c.chunk.layer_index = part;
                 c.chunk.write(&mut out, count).map_err(|e| fail(&e))?;
             }
         }
-        if offsets[streamed].len() != chunk_count {
-            return Err(Error::internal(format!(
-                "{} of {chunk_count} chunks were written",
-                offsets[streamed].len()
-            )));
+        for &part in streamed {
+            let chunk_count = headers[part].chunk_count;
+            if offsets[part].len() != chunk_count {
+                return Err(Error::internal(format!(
+                    "{} of part {part}'s {chunk_count} chunks were written",
+                    offsets[part].len()
+                )));
+            }
         }
         if let Some(source) = parts.carried {
             for (part, done) in offsets.iter_mut().enumerate() {
-                if part == streamed {
+                if streamed.contains(&part) {
                     continue;
                 }
                 for index in 0..headers[part].chunk_count {
@@ -184,8 +197,7 @@ impl<W: Write> Write for Counting<W> {
 /// The magic number, version and flags, and each header's attributes
 /// sorted by name; checked as the exr crate checks what it writes.
 pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
-    let mut requirements = MetaData::validate(headers, false)?;
-    requirements.file_format_version = 2;
+    let requirements = requirements(headers)?;
     let mut bytes = exr::meta::magic_number::BYTES.to_vec();
     requirements.write(&mut bytes)?;
     for header in headers {
@@ -194,6 +206,14 @@ pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
         for (name, value) in &attributes {
             match value {
                 AttributeValue::KeyCode(code) => write_key_code(name, code, &mut bytes),
+                // The crate names a deep part's type as a flat one's.
+                AttributeValue::BlockType(_) if header.deep => {
+                    let deep = match header.blocks.has_tiles() {
+                        true => BlockType::DeepTile,
+                        false => BlockType::DeepScanLine,
+                    };
+                    exr::meta::attribute::write(name, &AttributeValue::BlockType(deep), &mut bytes)?
+                }
                 value => exr::meta::attribute::write(name, value, &mut bytes)?,
             }
         }
@@ -204,6 +224,30 @@ pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
         bytes.push(0);
     }
     Ok(bytes)
+}
+
+/// The version flags `headers` need, once checked. The crate's
+/// `MetaData::validate` refuses deep parts outright; a file carrying one (a
+/// deep part of the input, copied) gets the per-header checks, as the reader
+/// gives such files, and the deep flag.
+fn requirements(headers: &[Header]) -> exr::error::Result<Requirements> {
+    if !headers.iter().any(|h| h.deep) {
+        let mut requirements = MetaData::validate(headers, false)?;
+        requirements.file_format_version = 2;
+        return Ok(requirements);
+    }
+    let multipart = headers.len() > 1;
+    let mut long_names = false;
+    for header in headers {
+        header.validate(multipart, &mut long_names, false)?;
+    }
+    Ok(Requirements {
+        file_format_version: 2,
+        is_single_layer_and_tiled: false,
+        has_long_names: long_names,
+        has_deep_data: true,
+        has_multiple_layers: multipart,
+    })
 }
 
 /// `keyCode` as OpenEXR lays it out: seven little-endian ints.

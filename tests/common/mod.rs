@@ -137,6 +137,23 @@ pub fn shared_images() -> Option<PathBuf> {
     shared_set("")
 }
 
+/// The second shared set (`../shared/exr-images-more`, or
+/// `$EXRCOMP_SHARED_IMAGES_MORE`: more of OpenEXR's public images, such as
+/// LuminanceChroma), or `None`, a skipped check: CI need not have it.
+pub fn shared_more_images() -> Option<PathBuf> {
+    let root = std::env::var_os("EXRCOMP_SHARED_IMAGES_MORE")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/exr-images-more"));
+    if root.is_dir() {
+        return Some(root);
+    }
+    skip(&format!(
+        "the second shared image set {} is absent (set EXRCOMP_SHARED_IMAGES_MORE)",
+        root.display()
+    ));
+    None
+}
+
 /// One image by its path in the shared set (`DisplayWindow/t08.exr`): the
 /// shipped copy, else the shared set's, else `None` (a skipped check).
 pub fn public_image(name: &str) -> Option<PathBuf> {
