@@ -2,7 +2,7 @@
 //! nodes, checked with errors that name the file's line, then built into one
 //! streaming `Graph`. The format: specs/job-format.md.
 
-use crate::cli::parse_screen;
+use crate::cli::{parse_screen, parse_tile};
 use crate::engine::graph::{Graph, Op};
 use crate::error::{Error, Result};
 use crate::ops::blur::{self, Filter};
@@ -18,6 +18,7 @@ use crate::ops::vblur::VectorBlur;
 use crate::ops::zmerge::ZMerge;
 use crate::params::*;
 use clap::ValueEnum;
+use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
 use std::collections::HashMap;
@@ -55,6 +56,7 @@ struct NodeSpec {
     all_layers: Option<bool>,
     view: Option<String>,
     compression: Option<String>,
+    tile: Option<Spanned<String>>,
     radius: Option<u32>,
     filter: Option<Spanned<String>>,
     focus: Option<f32>,
@@ -88,6 +90,8 @@ pub struct JobPlan {
     pub header_from: usize,
     pub output: String,
     pub compression: Option<String>,
+    /// The write node's tile size (`--tile` wins).
+    pub tile: Option<Vec2<usize>>,
     pub frames: Option<String>,
 }
 
@@ -343,6 +347,10 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
         graph: Graph::chain(reads.len(), graph_ops),
         output: beside(at.path, output),
         compression: nodes[write].get_ref().compression.clone(),
+        tile: match &nodes[write].get_ref().tile {
+            Some(tile) => Some(parse_tile(tile.get_ref()).or_else(|m| at.error(tile.span(), m))?),
+            None => None,
+        },
         frames: file.frames,
     })
 }
