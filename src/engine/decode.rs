@@ -272,21 +272,23 @@ impl InputCursor {
                 assert!(rest.is_empty(), "the blocks cover the strip's columns");
             }
         }
-        tasks.into_par_iter().try_for_each(|(k, j, count, mut slices)| {
-            let (_, _, skip, block) = spans[j];
-            let line_bytes = header.channels.bytes_per_pixel * block;
-            file.unpack_zip_chunk(part, k, |unpacked| {
-                let mut slices = slices.iter_mut();
-                let mut channel_at = 0;
-                for &size in &sizes {
-                    for line in 0..count {
-                        let out = slices.next().expect("a slice per line and plane");
-                        unpacked.place(line * line_bytes + channel_at + skip * size, out);
+        tasks
+            .into_par_iter()
+            .try_for_each(|(k, j, count, mut slices)| {
+                let (_, _, skip, block) = spans[j];
+                let line_bytes = header.channels.bytes_per_pixel * block;
+                file.unpack_zip_chunk(part, k, |unpacked| {
+                    let mut slices = slices.iter_mut();
+                    let mut channel_at = 0;
+                    for &size in &sizes {
+                        for line in 0..count {
+                            let out = slices.next().expect("a slice per line and plane");
+                            unpacked.place(line * line_bytes + channel_at + skip * size, out);
+                        }
+                        channel_at += block * size;
                     }
-                    channel_at += block * size;
-                }
-            })
-        })?;
+                })
+            })?;
         for plane in &mut planes {
             // SAFETY: the tasks wrote every row of every plane (asserted
             // above: the chunks' rows and columns are exactly the strip's).

@@ -1,9 +1,9 @@
 //! Output strips to compressed chunks, one block per task, in parallel.
 
+use super::plan::output_grid;
 use super::strip::Rows;
 use crate::error::{Error, Result};
 use crate::io::zip;
-use super::plan::output_grid;
 use exr::block::chunk::{
     Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
 };
@@ -59,9 +59,8 @@ pub fn encode_rows(
             let y1 = (y0 + lines as i32).min(rows.end());
             let x0 = column * block_width;
             let width = block_width.min(rows.width - x0);
-            let mut data = Vec::with_capacity(
-                width * (y1 - y0) as usize * header.channels.bytes_per_pixel,
-            );
+            let mut data =
+                Vec::with_capacity(width * (y1 - y0) as usize * header.channels.bytes_per_pixel);
             for y in y0..y1 {
                 let start = rows.row_range(y).start + x0;
                 for &p in &planes {

@@ -9,9 +9,9 @@ use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
 use crate::io::tiles::{self, Level};
 use crate::io::writer::Parts;
+use exr::math::RoundingMode;
 use exr::math::Vec2;
 use exr::meta::attribute::Text;
-use exr::math::RoundingMode;
 use exr::meta::attribute::{
     ChannelDescription, IntegerBounds, LevelMode, LineOrder, TileDescription,
 };

@@ -377,7 +377,10 @@ impl ExrFile {
         let size = block_index(header, part, &block)
             .map_err(|m| self.undecodable(index, m))?
             .pixel_size;
-        if !matches!(block, CompressedBlock::ScanLine(_) | CompressedBlock::Tile(_)) {
+        if !matches!(
+            block,
+            CompressedBlock::ScanLine(_) | CompressedBlock::Tile(_)
+        ) {
             return Err(self.error(format!("chunk {index} is not a flat block")));
         }
         Ok((block, size.area() * header.channels.bytes_per_pixel))
