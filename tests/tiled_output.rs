@@ -70,6 +70,12 @@ fn tiled_output_holds_the_input_pixels() {
                 assert_identical(&read_image(&output), &img);
             }
             assert_peers_read(&output);
+            if let Some(exrheader) = peer("exrheader") {
+                let out = succeed(std::process::Command::new(exrheader).arg(&output));
+                let text = String::from_utf8_lossy(&out.stdout);
+                let tiles = format!("single level\n    tile size {w} by {h} pixels");
+                assert!(text.contains(&tiles), "exrheader shows {text}");
+            }
             if let Some(idiff) = &idiff {
                 assert_idiff_identical(idiff, &input, &output);
             }
@@ -223,6 +229,33 @@ fn bad_tile_sizes_are_usage_errors() {
     ]);
     assert_eq!(result.status.code(), Some(2));
     assert!(stderr(&result).contains("--rows"), "{}", stderr(&result));
+    assert!(!out.exists());
+    // Nor does stitch join tiled files: rows 0-16 in tiles, 16-20 in
+    // scanlines, of one 20x20 image.
+    let (top, bottom) = (d.join("top.exr"), d.join("bottom.exr"));
+    run_ok(&[
+        "transcode",
+        s(&input),
+        "-o",
+        s(&top),
+        "-q",
+        "--rows",
+        "0-16",
+    ]);
+    let tiled = d.join("tiled.exr");
+    run_ok(&["transcode", s(&top), "-o", s(&tiled), "-q", "--tile", "16"]);
+    run_ok(&[
+        "transcode",
+        s(&input),
+        "-o",
+        s(&bottom),
+        "-q",
+        "--rows",
+        "16-20",
+    ]);
+    let result = run(&["stitch", s(&tiled), s(&bottom), "-o", s(&out)]);
+    assert_eq!(result.status.code(), Some(3));
+    assert!(stderr(&result).contains("tiled.exr"), "{}", stderr(&result));
     assert!(!out.exists());
     // A job file's bad tile names its line.
     let job = d.join("job.toml");

@@ -448,6 +448,26 @@ mod tests {
         let packed = reference_compress(&raw);
         assert!(decompress(&packed, raw.len() + 1).is_err());
         assert!(decompress(&packed[..packed.len() / 2], raw.len()).is_err());
+        // The zlib wrapper, checked here: a header that is not zlib's, and
+        // an Adler-32 that is not the output's.
+        for at in [0, 1, packed.len() - 1] {
+            let mut bad = packed.clone();
+            bad[at] ^= 0x21;
+            assert!(decompress(&bad, raw.len()).is_err(), "byte {at} damaged");
+        }
+    }
+
+    #[test]
+    fn flat_blocks_decode_from_a_few_bytes() {
+        // A transparent 64x64 tile of half RGBA: a few dozen bytes of
+        // deflate data, all of it inside libdeflate's end margin.
+        let flat = vec![0u8; 64 * 64 * 8];
+        let packed = reference_compress(&flat);
+        assert!(packed.len() < 100, "{} bytes", packed.len());
+        assert_eq!(decompress(&packed, flat.len()).unwrap(), flat);
+        let mut out = vec![MaybeUninit::new(1u8); flat.len()];
+        unpack(&packed, flat.len(), |u| u.place(0, &mut out)).unwrap();
+        assert!(out.iter().all(|b| unsafe { b.assume_init() } == 0));
     }
 
     /// The transform written out step by step as the OpenEXR spec gives it:
