@@ -134,25 +134,32 @@ impl PassThrough {
                 continue;
             }
             let (row, source_row) = ((y0 - top) / lines, (y0 - input.position.y()) / lines);
-            for column in 0..grid.blocks.x() {
-                let x0 = window.position.x() + (column * grid.block.x()) as i32;
-                let x1 = (x0 + grid.block.x() as i32).min(window.end().x());
-                let hidden = self.tests.iter().all(|&(merge, first, second)| {
+            // Whether every merge's first input hides nothing over the
+            // columns `x0..x1` of these rows (a copy of them, for a tile).
+            let hidden = |columns: Option<(i32, i32)>| {
+                self.tests.iter().all(|&(merge, first, second)| {
                     let Node::Op { op, .. } = &graph.nodes[merge] else {
                         return false;
                     };
                     let strip = strips[first]
                         .as_ref()
                         .expect("tested inputs are decoded first");
-                    match grid.blocks.x() {
-                        1 => op.hides_nothing(strip, &plan.channels[second], y0..y1),
-                        _ => {
-                            let tile = strip.copy_region(y0..y1, x0..x1);
-                            op.hides_nothing(&tile, &plan.channels[second], y0..y1)
+                    let second = &plan.channels[second];
+                    match columns {
+                        None => op.hides_nothing(strip, second, y0..y1),
+                        Some((x0, x1)) => {
+                            op.hides_nothing(&strip.copy_region(y0..y1, x0..x1), second, y0..y1)
                         }
                     }
-                });
-                if hidden {
+                })
+            };
+            // A whole row of blocks passes at once (every scanline block, and
+            // most tile rows under a small element).
+            let whole = hidden(None);
+            for column in 0..grid.blocks.x() {
+                let x0 = window.position.x() + (column * grid.block.x()) as i32;
+                let x1 = (x0 + grid.block.x() as i32).min(window.end().x());
+                if whole || (grid.blocks.x() > 1 && hidden(Some((x0, x1)))) {
                     passed.push(PassedBlock {
                         index: grid.chunk(column, row as usize),
                         chunk: source.chunk(column, source_row as usize),
