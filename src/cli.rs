@@ -452,6 +452,10 @@ pub struct RunArgs {
     /// OpenEXR's).
     #[arg(long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
     pub dwa_level: Option<f32>,
+    /// Write tiled files with tiles of WxH pixels (N: NxN), one level,
+    /// instead of scanlines.
+    #[arg(long, value_parser = parse_tile)]
+    pub tile: Option<exr::math::Vec2<usize>>,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
     #[arg(long, value_enum, default_value = "error")]
@@ -514,6 +518,22 @@ fn parse_rows(text: &str) -> Result<(i32, i32), String> {
         a.trim().parse().map_err(|_| bad())?,
         b.trim().parse().map_err(|_| bad())?,
     ))
+}
+
+/// A tile size: `WxH`, or `N` for N x N, each 1 to 65536 pixels.
+pub fn parse_tile(text: &str) -> Result<exr::math::Vec2<usize>, String> {
+    let bad = || format!("tile size '{text}': expected WxH or N, 1 to 65536 pixels each");
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=65536).contains(n))
+            .ok_or_else(bad)
+    };
+    match text.split_once(['x', 'X']) {
+        Some((w, h)) => Ok(exr::math::Vec2(number(w)?, number(h)?)),
+        None => number(text).map(|n| exr::math::Vec2(n, n)),
+    }
 }
 
 fn parse_level(text: &str) -> Result<exr::math::Vec2<usize>, String> {

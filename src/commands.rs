@@ -273,6 +273,7 @@ pub fn run(command: Command) -> Result<()> {
                 frames: run.frames.clone().or(plan.frames),
                 compression: run.compression.clone().or(plan.compression),
                 all_parts: run.all_parts || plan.all_parts,
+                tile: run.tile.or(plan.tile),
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -478,6 +479,7 @@ fn input_job(
         graph,
         compression: parse_compression(run)?,
         header_base: HeaderBase::Input(header_from),
+        tile: run.tile,
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
         resume: run.resume,
@@ -547,6 +549,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         graph: Graph::chain(0, vec![(Box::new(plate) as Box<dyn Op>, Vec::new())]),
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
+        tile: run.tile,
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
         resume: run.resume,

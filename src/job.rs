@@ -2,7 +2,7 @@
 //! nodes, checked with errors that name the file's line, then built into one
 //! streaming `Graph`. The format: specs/job-format.md.
 
-use crate::cli::parse_screen;
+use crate::cli::{parse_screen, parse_tile};
 use crate::engine::graph::{Graph, Op};
 use crate::error::{Error, Result};
 use crate::ops::blur::{self, Filter};
@@ -18,6 +18,7 @@ use crate::ops::vblur::VectorBlur;
 use crate::ops::zmerge::ZMerge;
 use crate::params::*;
 use clap::ValueEnum;
+use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use serde::Deserialize;
 use std::collections::HashMap;
@@ -56,6 +57,7 @@ struct NodeSpec {
     view: Option<String>,
     compression: Option<String>,
     all_parts: Option<bool>,
+    tile: Option<Spanned<String>>,
     radius: Option<u32>,
     filter: Option<Spanned<String>>,
     focus: Option<f32>,
@@ -91,6 +93,8 @@ pub struct JobPlan {
     pub compression: Option<String>,
     /// The write node's `all_parts`: the graph on every part of its read.
     pub all_parts: bool,
+    /// The write node's tile size (`--tile` wins).
+    pub tile: Option<Vec2<usize>>,
     pub frames: Option<String>,
 }
 
@@ -347,6 +351,10 @@ fn build(at: &Source, file: JobFile) -> Result<JobPlan> {
         output: beside(at.path, output),
         compression: nodes[write].get_ref().compression.clone(),
         all_parts: nodes[write].get_ref().all_parts.unwrap_or(false),
+        tile: match &nodes[write].get_ref().tile {
+            Some(tile) => Some(parse_tile(tile.get_ref()).or_else(|m| at.error(tile.span(), m))?),
+            None => None,
+        },
         frames: file.frames,
     })
 }

@@ -32,14 +32,14 @@ static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 /// The highest (`max`) or lowest peak RSS over `runs` runs of an `over`.
 fn peak_over_runs(dir: &Path, fg: &str, bg: &str, frames: &str, runs: usize, max: bool) -> u64 {
-    peak_runs(dir, "over", &[fg, bg], frames, runs, max)
+    peak_runs(dir, &["over"], &[fg, bg], frames, runs, max)
 }
 
 /// The highest (`max`) or lowest peak RSS over `runs` runs of `command`
-/// on `inputs` (file names in `dir`).
+/// (and its options) on `inputs` (file names in `dir`).
 fn peak_runs(
     dir: &Path,
-    command: &str,
+    command: &[&str],
     inputs: &[&str],
     frames: &str,
     runs: usize,
@@ -49,10 +49,10 @@ fn peak_runs(
     if max { peaks.max() } else { peaks.min() }.unwrap()
 }
 
-fn peak_rss(dir: &Path, command: &str, inputs: &[&str], frames: &str) -> u64 {
+fn peak_rss(dir: &Path, command: &[&str], inputs: &[&str], frames: &str) -> u64 {
     let paths: Vec<String> = inputs.iter().map(|i| s(&dir.join(i)).to_string()).collect();
     let out = dir.join("out/c.####.exr");
-    let mut args = vec![command];
+    let mut args = command.to_vec();
     args.extend(paths.iter().map(String::as_str));
     args.extend(["-o", s(&out), "--frames", frames, "--json"]);
     let result = run(&args);
@@ -108,8 +108,8 @@ fn stack_peak_memory_does_not_grow_with_frames() {
     }
     let layers = ["f.####.exr", "g.####.exr", "h.####.exr", "b.####.exr"];
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let few = peak_runs(d, "stack", &layers, "1-2", 3, true);
-    let many = peak_runs(d, "stack", &layers, "1-12", 2, false);
+    let few = peak_runs(d, &["stack"], &layers, "1-2", 3, true);
+    let many = peak_runs(d, &["stack"], &layers, "1-12", 2, false);
     assert!(
         many as f64 <= few as f64 * 1.25,
         "4-layer stack: 2 frames {few} B, 12 frames {many} B"
@@ -155,6 +155,14 @@ fn tiled_peak_memory_does_not_grow_with_height() {
     assert!(
         tall as f64 <= short as f64 * 1.25,
         "2048x4096 tiled {short} B, 2048x32768 tiled {tall} B"
+    );
+    // Written as tiles too: strips of whole tile rows, as flat.
+    let over = ["over", "--tile", "64"];
+    let short = peak_runs(d, &over, &["fs.####.exr", "bs.####.exr"], "1", 3, true);
+    let tall = peak_runs(d, &over, &["ft.####.exr", "bt.####.exr"], "1", 2, false);
+    assert!(
+        tall as f64 <= short as f64 * 1.25,
+        "into 64x64 tiles: 2048x4096 tiled {short} B, 2048x32768 tiled {tall} B"
     );
 }
 

@@ -282,3 +282,33 @@ fn levels_of_openexrs_mipmap_read_as_openexr_reads_them() {
         assert_idiff_identical(&idiff, &theirs, &ours);
     }
 }
+
+#[test]
+fn tiled_inputs_clipped_to_the_result_equal_reference() {
+    // `in` keeps the windows' intersection: each ZIP tiled input is wider
+    // than the result on one side, so its tiles are cut at the result's
+    // columns (straight into the strip, with default strips of whole tile
+    // rows; through the carried tiles with strips of 16 rows).
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (a_path, b_path, out) = (d.join("a.exr"), d.join("b.exr"), d.join("out.exr"));
+    let a = random_rgba(11, -7, 0, 90, 64, Kind::Half, false);
+    let b = random_rgba(12, 5, 0, 101, 64, Kind::Half, false);
+    write_encoded(&a_path, &a, tiles(32, "zip", LineOrder::Increasing));
+    write_encoded(&b_path, &b, tiles(16, "zip", LineOrder::Increasing));
+    let reference = reference_merge("in", &a, &b, false, 1.0, &[""]);
+    for strip in [&["--strip-rows", "16"][..], &[]] {
+        let args = [
+            "merge",
+            "--op",
+            "in",
+            s(&a_path),
+            s(&b_path),
+            "-o",
+            s(&out),
+            "-q",
+        ];
+        run_ok(&[&args[..], strip].concat());
+        assert_identical(&read_image(&out), &reference);
+    }
+}

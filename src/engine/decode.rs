@@ -189,17 +189,16 @@ impl InputCursor {
     }
 
     /// Whether strip `rows` can be decoded straight into its planes: ZIP or
-    /// ZIPS scanline chunks, none carried, that lie wholly inside the strip
-    /// and cover all its rows and columns (the usual case: the output's own
-    /// grid).
+    /// ZIPS chunks (scanline blocks or tiles), none carried, that lie wholly
+    /// inside the strip's rows and cover all its rows and columns (the usual
+    /// case: the input on the output's grid, or strips of whole tile rows).
     fn direct(&self, columns: (i32, usize), rows: &Range<i32>) -> bool {
         let header = self.file.header(self.part);
         let w = self.window;
         let (top, bottom) = (w.position.y(), w.end().y());
-        let lines = header.compression.scan_lines_per_block() as i32;
+        let lines = self.level.block.y() as i32;
         self.deep.is_none()
             && self.carried.is_empty()
-            && !header.blocks.has_tiles()
             && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)
             && w.position.x() <= columns.0
             && w.end().x() >= columns.0 + columns.1 as i32
@@ -211,9 +210,11 @@ impl InputCursor {
 
     /// Strip `rows` decoded straight into new planes, chunks in parallel:
     /// each chunk's bytes are interleaved from its decompressed halves to
-    /// their rows, with no block buffer, copy or zero fill (see `direct`).
+    /// their place in the strip (each of its lines, in each plane, clipped to
+    /// the strip's columns), with no block buffer, copy or zero fill (see
+    /// `direct`).
     fn decode_direct(&self, columns: (i32, usize), rows: &Range<i32>) -> Result<Rows> {
-        let (file, part) = (&self.file, self.part);
+        let (file, part, level) = (&self.file, self.part, self.level);
         let header = file.header(part);
         let channels = header.channels.list.to_vec();
         let sizes: Vec<usize> = channels
@@ -221,49 +222,76 @@ impl InputCursor {
             .map(|c| c.sample_type.bytes_per_sample())
             .collect();
         let (width, height) = (columns.1, (rows.end - rows.start) as usize);
-        let in_width = self.window.size.width();
-        let line_bytes = header.channels.bytes_per_pixel * in_width;
-        let skip = (columns.0 - self.window.position.x()) as usize;
-        let lines = header.compression.scan_lines_per_block();
-        // The strip's j-th chunk starts `j * lines` rows into it.
-        let below = (self.window.end().y() - rows.start) as usize;
-        let chunk_lines = |j: usize| lines.min(below - j * lines);
+        let (x, top) = (self.window.position.x(), self.window.position.y());
+        let (block_width, lines) = (level.block.x(), level.block.y());
+        // The strip's block rows, and per block column its columns in the
+        // strip (from, to) and in the block (skip, its width).
+        let first_row = (rows.start - top) as usize / lines;
+        let spans: Vec<(usize, usize, usize, usize)> = (0..level.blocks.x())
+            .filter_map(|column| {
+                let left = x + (column * block_width) as i32;
+                let block = block_width.min(level.size.x() - column * block_width);
+                let from = left.max(columns.0);
+                let to = (left + block as i32).min(columns.0 + width as i32);
+                (from < to).then(|| {
+                    let at = (from - columns.0) as usize;
+                    (at, (to - columns.0) as usize, (from - left) as usize, block)
+                })
+            })
+            .collect();
+        let first_column = (columns.0 - x) as usize / block_width;
         let mut planes: Vec<Samples> = channels
             .iter()
             .map(|c| Samples::with_capacity(c.sample_type, width * height))
             .collect();
-        // Per chunk, its rows of every plane.
-        let mut tasks: Vec<(usize, usize, ChunkRows)> = self
-            .chunks_for(columns, rows)
-            .into_iter()
-            .enumerate()
-            .map(|(j, k)| (j, k, Vec::new()))
-            .collect();
-        for (plane, &size) in planes.iter_mut().zip(&sizes) {
-            let mut rest = &mut plane.unset_bytes()[..width * height * size];
-            for (j, _, slices) in tasks.iter_mut() {
-                let (mine, after) = rest.split_at_mut(chunk_lines(*j) * width * size);
-                slices.push(mine);
-                rest = after;
-            }
-            assert!(rest.is_empty(), "the chunks cover the strip");
-        }
-        tasks.into_par_iter().try_for_each(|(j, k, mut slices)| {
-            file.unpack_zip_chunk(part, k, |unpacked| {
-                for line in 0..chunk_lines(j) {
-                    let mut offset = line * line_bytes;
-                    for (slice, &size) in slices.iter_mut().zip(&sizes) {
-                        let row = width * size;
-                        let out = &mut slice[line * row..(line + 1) * row];
-                        unpacked.place(offset + skip * size, out);
-                        offset += in_width * size;
-                    }
+        // Per chunk (block row after block row, left to right): its lines
+        // and their slices, plane after plane, line after line.
+        let mut tasks: Vec<(usize, usize, usize, ChunkRows)> = Vec::new();
+        for line in 0..height {
+            let row = first_row + line / lines;
+            if line % lines == 0 {
+                let count = lines.min(height - line);
+                for (j, _) in spans.iter().enumerate() {
+                    let chunk = level.chunk(first_column + j, row);
+                    tasks.push((chunk, j, count, Vec::new()));
                 }
-            })
-        })?;
+            }
+        }
+        let per_row = spans.len();
+        for (plane, &size) in planes.iter_mut().zip(&sizes) {
+            let bytes = &mut plane.unset_bytes()[..width * height * size];
+            for (line, mut rest) in bytes.chunks_exact_mut(width * size).enumerate() {
+                let base = line / lines * per_row;
+                let mut done = 0;
+                for (j, &(from, to, _, _)) in spans.iter().enumerate() {
+                    debug_assert_eq!(from, done, "the blocks cover the strip's columns");
+                    let (mine, after) = rest.split_at_mut((to - from) * size);
+                    tasks[base + j].3.push(mine);
+                    (rest, done) = (after, to);
+                }
+                assert!(rest.is_empty(), "the blocks cover the strip's columns");
+            }
+        }
+        tasks
+            .into_par_iter()
+            .try_for_each(|(k, j, count, mut slices)| {
+                let (_, _, skip, block) = spans[j];
+                let line_bytes = header.channels.bytes_per_pixel * block;
+                file.unpack_zip_chunk(part, k, |unpacked| {
+                    let mut slices = slices.iter_mut();
+                    let mut channel_at = 0;
+                    for &size in &sizes {
+                        for line in 0..count {
+                            let out = slices.next().expect("a slice per line and plane");
+                            unpacked.place(line * line_bytes + channel_at + skip * size, out);
+                        }
+                        channel_at += block * size;
+                    }
+                })
+            })?;
         for plane in &mut planes {
             // SAFETY: the tasks wrote every row of every plane (asserted
-            // above: the chunks' rows are exactly the strip's).
+            // above: the chunks' rows and columns are exactly the strip's).
             unsafe { plane.set_len(width * height) };
         }
         Ok(Rows {

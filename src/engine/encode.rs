@@ -1,9 +1,12 @@
 //! Output strips to compressed chunks, one block per task, in parallel.
 
+use super::plan::output_grid;
 use super::strip::Rows;
 use crate::error::{Error, Result};
 use crate::io::zip;
-use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
+use exr::block::chunk::{
+    Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
+};
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
 use exr::meta::header::Header;
@@ -16,9 +19,10 @@ pub struct IndexedChunk {
     pub chunk: Chunk,
 }
 
-/// Compresses `rows` (which start on a block boundary of `header`'s data
-/// window) into chunks, in order; ZIP and ZIPS at libdeflate level
-/// `zip_level`. Blocks that `passed` holds are taken from it as they are.
+/// Compresses `rows` (which start on a block row of `header`'s data window:
+/// scanline blocks, or tile rows) into chunks, in offset-table order; ZIP
+/// and ZIPS at libdeflate level `zip_level`. Blocks that `passed` holds are
+/// taken from it as they are.
 pub fn encode_rows(
     rows: &Rows,
     header: &Header,
@@ -26,9 +30,11 @@ pub fn encode_rows(
     passed: Vec<IndexedChunk>,
 ) -> Result<Vec<IndexedChunk>> {
     let window = header.data_window();
-    let lines = header.compression.scan_lines_per_block();
+    let grid = output_grid(header);
+    let (block_width, lines) = (grid.block.x(), grid.block.y());
     let first_row = (rows.y - window.position.y()) as usize;
-    debug_assert_eq!(first_row % lines, 0, "strips start on block boundaries");
+    debug_assert_eq!(first_row % lines, 0, "strips start on block rows");
+    debug_assert_eq!(rows.width, window.size.width(), "strips span the window");
     // Planes in the header's (sorted) channel order.
     let planes: Vec<usize> = header
         .channels
@@ -41,31 +47,54 @@ pub fn encode_rows(
         .collect();
     let headers = std::slice::from_ref(header);
     let first = first_row / lines;
-    let mut chunks: Vec<IndexedChunk> = (0..rows.height.div_ceil(lines))
+    let blocks: Vec<(usize, usize)> = (first..first + rows.height.div_ceil(lines))
+        .flat_map(|row| (0..grid.blocks.x()).map(move |column| (column, row)))
+        .filter(|&(column, row)| !passed.iter().any(|c| c.index == grid.chunk(column, row)))
+        .collect();
+    let mut chunks: Vec<IndexedChunk> = blocks
         .into_par_iter()
-        .filter(|b| !passed.iter().any(|c| c.index == first + b))
-        .map(|b| {
-            let y0 = rows.y + (b * lines) as i32;
+        .map(|(column, row)| {
+            let index = grid.chunk(column, row);
+            let y0 = window.position.y() + (row * lines) as i32;
             let y1 = (y0 + lines as i32).min(rows.end());
-            let mut data = Vec::with_capacity(
-                rows.width * (y1 - y0) as usize * header.channels.bytes_per_pixel,
-            );
+            let x0 = column * block_width;
+            let width = block_width.min(rows.width - x0);
+            let mut data =
+                Vec::with_capacity(width * (y1 - y0) as usize * header.channels.bytes_per_pixel);
             for y in y0..y1 {
+                let start = rows.row_range(y).start + x0;
                 for &p in &planes {
-                    data.extend_from_slice(rows.planes[p].bytes(rows.row_range(y)));
+                    data.extend_from_slice(rows.planes[p].bytes(start..start + width));
                 }
             }
             if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
+                let packed = zip::compress(&data, zip_level).unwrap_or(data);
+                let compressed_block = match header.blocks.has_tiles() {
+                    true => CompressedBlock::Tile(CompressedTileBlock {
+                        coordinates: TileCoordinates {
+                            tile_index: Vec2(column, row),
+                            level_index: Vec2(0, 0),
+                        },
+                        compressed_pixels_le: packed,
+                    }),
+                    false => CompressedBlock::ScanLine(CompressedScanLineBlock {
+                        y_coordinate: y0,
+                        compressed_pixels_le: packed,
+                    }),
+                };
                 return Ok(IndexedChunk {
-                    index: first_row / lines + b,
-                    chunk: scanline_chunk(y0, zip::compress(&data, zip_level).unwrap_or(data)),
+                    index,
+                    chunk: Chunk {
+                        layer_index: 0,
+                        compressed_block,
+                    },
                 });
             }
             let block = UncompressedBlock {
                 index: BlockIndex {
                     layer: 0,
-                    pixel_position: Vec2(0, first_row + b * lines),
-                    pixel_size: Vec2(rows.width, (y1 - y0) as usize),
+                    pixel_position: Vec2(x0, row * lines),
+                    pixel_size: Vec2(width, (y1 - y0) as usize),
                     level: Vec2(0, 0),
                 },
                 data,
@@ -73,23 +102,10 @@ pub fn encode_rows(
             let chunk = block
                 .compress_to_chunk(headers)
                 .map_err(|e| Error::internal(format!("cannot compress block: {e}")))?;
-            Ok(IndexedChunk {
-                index: first_row / lines + b,
-                chunk,
-            })
+            Ok(IndexedChunk { index, chunk })
         })
         .collect::<Result<_>>()?;
     chunks.extend(passed);
     chunks.sort_unstable_by_key(|c| c.index);
     Ok(chunks)
-}
-
-fn scanline_chunk(y: i32, compressed_pixels_le: Vec<u8>) -> Chunk {
-    Chunk {
-        layer_index: 0,
-        compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
-            y_coordinate: y,
-            compressed_pixels_le,
-        }),
-    }
 }

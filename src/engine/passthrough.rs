@@ -9,9 +9,11 @@
 use super::decode::{decode_strip, InputCursor};
 use super::encode::IndexedChunk;
 use super::graph::{Graph, Node};
-use super::plan::FramePlan;
+use super::plan::{output_grid, FramePlan};
 use super::strip::Rows;
 use crate::error::Result;
+use exr::block::chunk::CompressedBlock;
+use exr::math::Vec2;
 use exr::prelude::Compression;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -32,6 +34,8 @@ struct PassedBlock {
     index: usize,
     /// The input's chunk index.
     chunk: usize,
+    /// The block's column and row in the output's grid.
+    tile: Vec2<usize>,
 }
 
 impl PassThrough {
@@ -55,11 +59,16 @@ impl PassThrough {
         let source_header = plan.header_of(source);
         let (out, window) = (&plan.header, plan.window());
         let input = source_header.data_window();
-        let lines = out.compression.scan_lines_per_block() as i32;
+        let grid = output_grid(out);
+        let lines = grid.block.y() as i32;
         // The source is decoded after the inputs tested, so it is not one.
+        // Its blocks must be the output's: scanline blocks of the same
+        // columns, or tiles of the same size (of level 0, as written).
         let same = tests.iter().all(|&(_, first, _)| first != source)
             && plan.deep[source].is_none()
-            && !source_header.blocks.has_tiles()
+            && source_header.blocks.has_tiles() == out.blocks.has_tiles()
+            && plan.levels[source].block == grid.block
+            && plan.levels[source].index == exr::math::Vec2(0, 0)
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
             && source_header.compression == out.compression
@@ -110,34 +119,56 @@ impl PassThrough {
     ) -> Vec<PassedBlock> {
         let window = plan.window();
         let input = plan.header_of(self.source).data_window();
-        let lines = plan.header.compression.scan_lines_per_block() as i32;
+        let (grid, source) = (output_grid(&plan.header), plan.levels[self.source]);
+        let lines = grid.block.y() as i32;
         let (top, bottom) = (window.position.y(), window.end().y());
         let first = rows.start.max(top);
         let first = top + (first - top + lines - 1) / lines * lines;
-        (first..rows.end.min(bottom))
-            .step_by(lines as usize)
-            .filter_map(|y0| {
-                let y1 = (y0 + lines).min(bottom);
-                // The input's chunk must hold exactly these rows.
-                let inside = y0 >= input.position.y() && y1 <= input.end().y();
-                let same_end = (y0 + lines).min(input.end().y()) == y1;
-                let hidden = || {
-                    self.tests.iter().all(|&(merge, first, second)| {
-                        let Node::Op { op, .. } = &graph.nodes[merge] else {
-                            return false;
-                        };
-                        let strip = strips[first]
-                            .as_ref()
-                            .expect("tested inputs are decoded first");
-                        op.hides_nothing(strip, &plan.channels[second], y0..y1)
-                    })
-                };
-                (y1 <= rows.end && inside && same_end && hidden()).then(|| PassedBlock {
-                    index: ((y0 - top) / lines) as usize,
-                    chunk: ((y0 - input.position.y()) / lines) as usize,
+        let mut passed = Vec::new();
+        for y0 in (first..rows.end.min(bottom)).step_by(lines as usize) {
+            let y1 = (y0 + lines).min(bottom);
+            // The input's chunk must hold exactly these rows.
+            let inside = y0 >= input.position.y() && y1 <= input.end().y();
+            let same_end = (y0 + lines).min(input.end().y()) == y1;
+            if y1 > rows.end || !inside || !same_end {
+                continue;
+            }
+            let (row, source_row) = ((y0 - top) / lines, (y0 - input.position.y()) / lines);
+            // Whether every merge's first input hides nothing over the
+            // columns `x0..x1` of these rows (a copy of them, for a tile).
+            let hidden = |columns: Option<(i32, i32)>| {
+                self.tests.iter().all(|&(merge, first, second)| {
+                    let Node::Op { op, .. } = &graph.nodes[merge] else {
+                        return false;
+                    };
+                    let strip = strips[first]
+                        .as_ref()
+                        .expect("tested inputs are decoded first");
+                    let second = &plan.channels[second];
+                    match columns {
+                        None => op.hides_nothing(strip, second, y0..y1),
+                        Some((x0, x1)) => {
+                            op.hides_nothing(&strip.copy_region(y0..y1, x0..x1), second, y0..y1)
+                        }
+                    }
                 })
-            })
-            .collect()
+            };
+            // A whole row of blocks passes at once (every scanline block, and
+            // most tile rows under a small element).
+            let whole = hidden(None);
+            for column in 0..grid.blocks.x() {
+                let x0 = window.position.x() + (column * grid.block.x()) as i32;
+                let x1 = (x0 + grid.block.x() as i32).min(window.end().x());
+                if whole || (grid.blocks.x() > 1 && hidden(Some((x0, x1)))) {
+                    passed.push(PassedBlock {
+                        index: grid.chunk(column, row as usize),
+                        chunk: source.chunk(column, source_row as usize),
+                        tile: Vec2(column, row as usize),
+                    });
+                }
+            }
+        }
+        passed
     }
 
     /// The source's chunks for `blocks`, each checked to decompress, as
@@ -147,9 +178,14 @@ impl PassThrough {
         blocks
             .par_iter()
             .map(|block| {
+                let mut chunk = file.checked_zip_chunk(part, block.chunk)?;
+                // A tile's coordinates count from the data window's top.
+                if let CompressedBlock::Tile(tile) = &mut chunk.compressed_block {
+                    tile.coordinates.tile_index = block.tile;
+                }
                 Ok(IndexedChunk {
                     index: block.index,
-                    chunk: file.checked_zip_chunk(part, block.chunk)?,
+                    chunk,
                 })
             })
             .collect()

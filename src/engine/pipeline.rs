@@ -8,7 +8,7 @@ use super::decode::{decode_all, InputCursor};
 use super::encode::{encode_rows, IndexedChunk};
 use super::interrupt;
 use super::passthrough::PassThrough;
-use super::plan::{plan_parts, FramePlan, FrameSources, Job};
+use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
@@ -201,7 +201,8 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
     let mut composer = None;
     // Passed chunks wait here until their rows come out of the graph.
     let mut passed: Vec<IndexedChunk> = Vec::new();
-    let mut lines = 1;
+    // The output's block rows and blocks per row.
+    let (mut lines, mut across) = (1, 1);
     let mut frame = 0;
     let mut written = IntegerBounds::zero();
     while let Some(msg) = receive(&rx) {
@@ -209,7 +210,8 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
             Msg::Begin(ref plan) | Msg::Part(ref plan) => {
                 frame = plan.frame;
                 written = plan.window();
-                lines = plan.header.compression.scan_lines_per_block();
+                let grid = output_grid(&plan.header);
+                (lines, across) = (grid.block.y(), grid.blocks.x());
                 passed.clear();
                 composer = Some(Composer::new(
                     &job.graph,
@@ -231,8 +233,9 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                             let top = written.position.y();
                             let blocks = (rows.y - top) as usize / lines
                                 ..((rows.end() - top) as usize).div_ceil(lines);
-                            let (now, later) =
-                                passed.drain(..).partition(|c| blocks.contains(&c.index));
+                            let (now, later) = passed
+                                .drain(..)
+                                .partition(|c| blocks.contains(&(c.index / across)));
                             passed = later;
                             Msg::Strip(Composed { rows, passed: now })
                         }

@@ -9,11 +9,14 @@ use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
 use crate::io::sequence::FramePattern;
 use crate::io::tiles::{self, Level};
 use crate::io::writer::Parts;
+use exr::math::RoundingMode;
 use exr::math::Vec2;
 use exr::meta::attribute::Text;
-use exr::meta::attribute::{ChannelDescription, IntegerBounds, LineOrder};
+use exr::meta::attribute::{
+    ChannelDescription, IntegerBounds, LevelMode, LineOrder, TileDescription,
+};
 use exr::meta::header::{Header, LayerAttributes};
-use exr::meta::BlockDescription;
+use exr::meta::{compute_chunk_count, BlockDescription};
 use exr::prelude::Compression;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -48,6 +51,8 @@ pub struct Job {
     pub graph: Graph,
     /// Output compression; `None` keeps that of the input the header comes from.
     pub compression: Option<Compression>,
+    /// Tile size of a tiled output (one level); `None` writes scanlines.
+    pub tile: Option<Vec2<usize>>,
     pub header_base: HeaderBase,
     /// Rows per strip (rounded up to whole blocks); `None` sizes by bytes.
     pub strip_rows: Option<usize>,
@@ -319,14 +324,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
-    header.blocks = BlockDescription::ScanLines;
+    header.blocks = match job.tile {
+        Some(tile_size) => BlockDescription::Tiles(TileDescription {
+            tile_size,
+            level_mode: LevelMode::Singular,
+            rounding_mode: RoundingMode::Down,
+        }),
+        None => BlockDescription::ScanLines,
+    };
     header.line_order = LineOrder::Increasing;
     header.layer_size = window.size;
     header.own_attributes.layer_position = window.position;
-    header.chunk_count = window
-        .size
-        .height()
-        .div_ceil(header.compression.scan_lines_per_block());
+    header.chunk_count = compute_chunk_count(header.compression, window.size, header.blocks);
 
     let carried = match job.header_base {
         HeaderBase::Input(i)
@@ -338,6 +347,11 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         }
         _ => None,
     };
+    if let (Some(_), Some(_)) = (job.tile, job.rows) {
+        return Err(Error::usage(
+            "--rows writes bands of scanline files only (stitch joins scanline blocks): drop --tile",
+        ));
+    }
     if let (Some(i), Some(_)) = (carried, job.rows) {
         return Err(inputs[i].error(format!(
             "has {} parts: --rows renders bands of single-part outputs only, and the other parts \
@@ -345,7 +359,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             inputs[i].meta.headers.len()
         )));
     }
-    let lines = header.compression.scan_lines_per_block();
+    // The output's block rows: scanline blocks, or tile rows.
+    let lines = output_grid(&header).block.y();
     let computed = match job.rows {
         Some(rows) => band(&mut header, graph, rows)?,
         None => window,
@@ -353,7 +368,11 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     // Never write a file the reader would refuse, nor allocate for it. From
     // inputs, a result far wider than any of them (inputs far apart) is an
     // input problem; a generated image asked that wide, a usage error.
-    let block_bytes = (window.size.width() * lines).saturating_mul(header.channels.bytes_per_pixel);
+    let block_bytes = window
+        .size
+        .width()
+        .saturating_mul(lines)
+        .saturating_mul(header.channels.bytes_per_pixel);
     if block_bytes > MAX_BLOCK_BYTES {
         let message = format!(
             "the result's data window is {} pixels wide: its blocks of {lines} lines would take \
@@ -382,7 +401,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         .map(|i| {
             let header = header_of(i);
             let row = header.channels.bytes_per_pixel * input_window(i).size.width();
-            (row, header.compression.scan_lines_per_block())
+            (row, levels[i].block.y())
         })
         .collect();
     let strip_bytes = |rows: usize| {
@@ -410,9 +429,20 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             None => Error::usage(message),
         });
     }
+    // Strips of whole tile rows of the tiled inputs too, when that stays
+    // small: their tiles then decode straight into the strip, none carried.
+    let grain = (0..inputs.len())
+        .filter(|&i| deep[i].is_none() && header_of(i).blocks.has_tiles())
+        .map(|i| levels[i].block.y())
+        .fold(lines, lcm);
+    let grain = match strip_bytes(grain) <= MAX_STRIP_BYTES / 8 {
+        true => grain,
+        false => lines,
+    };
     let mut blocks = STRIP_BYTES
         .div_ceil(block_bytes.max(1))
-        .max(rayon::current_num_threads());
+        .max(rayon::current_num_threads())
+        .next_multiple_of(grain / lines);
     while blocks > 1 && strip_bytes(blocks * lines) > MAX_STRIP_BYTES {
         blocks = (blocks / 2).max(1);
     }
@@ -436,6 +466,22 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         carried,
         every_part: None,
     })
+}
+
+/// The output's grid of blocks (scanline blocks or tiles) and their place
+/// in its offset table.
+pub fn output_grid(header: &Header) -> Level {
+    tiles::levels(header)[0]
+}
+
+fn lcm(a: usize, b: usize) -> usize {
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    a / gcd(a, b) * b
 }
 
 /// The level each input reads (`input_level`); a level asked that no input

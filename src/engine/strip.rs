@@ -444,22 +444,33 @@ impl Rows {
 
     /// A copy of rows `range` (absolute).
     pub fn copy_rows(&self, range: Range<i32>) -> Rows {
-        let start = self.row_range(range.start).start;
-        let len = (range.end - range.start) as usize * self.width;
+        self.copy_region(range, self.x..self.x + self.width as i32)
+    }
+
+    /// A copy of rows `rows` and columns `columns` (absolute), which it holds.
+    pub fn copy_region(&self, rows: Range<i32>, columns: Range<i32>) -> Rows {
+        let width = (columns.end - columns.start) as usize;
+        let skip = (columns.start - self.x) as usize;
+        let height = (rows.end - rows.start) as usize;
         let planes = self
             .planes
             .iter()
             .map(|p| {
-                let mut out = Samples::zeros(p.kind(), len);
-                out.bytes_mut(0..len)
-                    .copy_from_slice(p.bytes(start..start + len));
+                let mut out = Samples::zeros(p.kind(), width * height);
+                for (line, y) in rows.clone().enumerate() {
+                    let from = self.row_range(y).start + skip;
+                    out.bytes_mut(line * width..(line + 1) * width)
+                        .copy_from_slice(p.bytes(from..from + width));
+                }
                 out
             })
             .collect();
         Rows {
             extent: Extent {
-                y: range.start,
-                height: (range.end - range.start) as usize,
+                x: columns.start,
+                y: rows.start,
+                width,
+                height,
                 ..self.extent
             },
             channels: self.channels.clone(),

@@ -361,16 +361,16 @@ impl ExrFile {
     /// checksum) but left compressed, as the chunk of a single-part output.
     pub fn checked_zip_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
         let (block, expected) = self.zip_chunk(part, index)?;
-        zip::verify(&block.compressed_pixels_le, expected)
-            .map_err(|m| self.undecodable(index, m))?;
+        zip::verify(packed_pixels(&block), expected).map_err(|m| self.undecodable(index, m))?;
         Ok(Chunk {
             layer_index: 0,
-            compressed_block: CompressedBlock::ScanLine(block),
+            compressed_block: block,
         })
     }
 
-    /// Decompresses ZIP or ZIPS chunk `index` of `part` and hands its bytes,
-    /// in the file's line and channel order, to `f` (`zip::Unpacked`).
+    /// Decompresses ZIP or ZIPS chunk `index` of `part` (a scanline block or
+    /// a tile) and hands its bytes, in the file's line and channel order, to
+    /// `f` (`zip::Unpacked`).
     pub fn unpack_zip_chunk<R>(
         &self,
         part: usize,
@@ -378,20 +378,22 @@ impl ExrFile {
         f: impl FnOnce(&zip::Unpacked) -> R,
     ) -> Result<R> {
         let (block, expected) = self.zip_chunk(part, index)?;
-        zip::unpack(&block.compressed_pixels_le, expected, f)
-            .map_err(|m| self.undecodable(index, m))
+        zip::unpack(packed_pixels(&block), expected, f).map_err(|m| self.undecodable(index, m))
     }
 
-    /// Scanline chunk `index` of `part` and the bytes it decompresses to.
-    fn zip_chunk(&self, part: usize, index: usize) -> Result<(CompressedScanLineBlock, usize)> {
+    /// Flat chunk `index` of `part` and the bytes it decompresses to.
+    fn zip_chunk(&self, part: usize, index: usize) -> Result<(CompressedBlock, usize)> {
         let block = self.read_chunk(part, index)?.compressed_block;
         let header = self.header(part);
         let size = block_index(header, part, &block)
             .map_err(|m| self.undecodable(index, m))?
             .pixel_size;
-        let CompressedBlock::ScanLine(block) = block else {
-            return Err(self.error(format!("chunk {index} is not a scanline block")));
-        };
+        if !matches!(
+            block,
+            CompressedBlock::ScanLine(_) | CompressedBlock::Tile(_)
+        ) {
+            return Err(self.error(format!("chunk {index} is not a flat block")));
+        }
         Ok((block, size.area() * header.channels.bytes_per_pixel))
     }
 
@@ -593,6 +595,15 @@ fn check_header_sizes(header: &Header, chunk_bytes: u64) -> std::result::Result<
         ));
     }
     Ok(())
+}
+
+/// A flat chunk's compressed pixels.
+fn packed_pixels(block: &CompressedBlock) -> &[u8] {
+    match block {
+        CompressedBlock::ScanLine(b) => &b.compressed_pixels_le,
+        CompressedBlock::Tile(b) => &b.compressed_pixels_le,
+        _ => &[],
+    }
 }
 
 /// Where a flat block's pixels lie in its level (from its data window's

@@ -14,6 +14,11 @@ pub fn stitch(bands: &[PathBuf], output: &Path) -> Result<()> {
         .map(|p| ExrFile::open(p, None))
         .collect::<Result<_>>()?;
     files.sort_by_key(|f| f.header(0).data_window().position.y());
+    // Bands are scanline files (`--rows` writes no tiles): tiles of a band
+    // would need renumbering, and a partial tile row cannot be joined.
+    if let Some(tiled) = files.iter().find(|f| f.header(0).blocks.has_tiles()) {
+        return Err(tiled.error("is tiled: stitch joins scanline bands (as --rows writes them)"));
+    }
     let first = files[0].header(0).clone();
     let lines = first.compression.scan_lines_per_block();
     let mut window = first.data_window();
