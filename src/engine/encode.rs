@@ -2,10 +2,11 @@
 
 use super::strip::Rows;
 use crate::error::{Error, Result};
-use crate::io::zip;
+use crate::io::{subsampling, zip};
 use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
+use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::Compression;
 use rayon::prelude::*;
@@ -40,6 +41,7 @@ pub fn encode_rows(
         })
         .collect();
     let headers = std::slice::from_ref(header);
+    let subsampled = subsampling::any(header);
     let first = first_row / lines;
     let mut chunks: Vec<IndexedChunk> = (0..rows.height.div_ceil(lines))
         .into_par_iter()
@@ -47,18 +49,36 @@ pub fn encode_rows(
         .map(|b| {
             let y0 = rows.y + (b * lines) as i32;
             let y1 = (y0 + lines as i32).min(rows.end());
-            let mut data = Vec::with_capacity(
-                rows.width * (y1 - y0) as usize * header.channels.bytes_per_pixel,
-            );
+            let rect = IntegerBounds::new((rows.x, y0), (rows.width, (y1 - y0) as usize));
+            let mut data = Vec::with_capacity(subsampling::block_bytes(&header.channels, rect));
             for y in y0..y1 {
-                for &p in &planes {
-                    data.extend_from_slice(rows.planes[p].bytes(rows.row_range(y)));
+                for (&p, channel) in planes.iter().zip(&header.channels.list) {
+                    let plane = &rows.planes[p];
+                    let range = rows.row_range(y);
+                    if channel.sampling == Vec2(1, 1) {
+                        data.extend_from_slice(plane.bytes(range));
+                    } else if subsampling::holds_line(channel.sampling.y(), y) {
+                        // The samples at the columns that are multiples of the sampling.
+                        let xs = channel.sampling.x() as i32;
+                        let first = (xs - rows.x.rem_euclid(xs)) % xs;
+                        (range.start + first as usize..range.end)
+                            .step_by(xs as usize)
+                            .for_each(|i| data.extend_from_slice(plane.bytes(i..i + 1)));
+                    }
                 }
             }
             if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
                 return Ok(IndexedChunk {
                     index: first_row / lines + b,
                     chunk: scanline_chunk(y0, zip::compress(&data, zip_level).unwrap_or(data)),
+                });
+            }
+            if subsampled {
+                let packed = subsampling::compress(header, data, rect)
+                    .map_err(|e| Error::internal(format!("cannot compress block: {e}")))?;
+                return Ok(IndexedChunk {
+                    index: first_row / lines + b,
+                    chunk: scanline_chunk(y0, packed),
                 });
             }
             let block = UncompressedBlock {

@@ -295,6 +295,18 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
             inputs[i].meta.headers.len()
         )));
     }
+    if let Some(message) = crate::io::subsampling::any(&header)
+        .then(|| crate::io::subsampling::refused(header.compression))
+        .flatten()
+    {
+        let source = match job.header_base {
+            HeaderBase::Input(i) => inputs[i].path.display().to_string(),
+            HeaderBase::New(_) => "the result".into(),
+        };
+        return Err(Error::usage(format!(
+            "frame {frame}: {source} has subsampled channels for the output: {message}"
+        )));
+    }
     let lines = header.compression.scan_lines_per_block();
     let computed = match job.rows {
         Some(rows) => band(&mut header, graph, rows)?,
@@ -482,25 +494,14 @@ fn deep_input(
     Ok(Some(Arc::new(DeepInput::new(files))))
 }
 
-/// What the engine reads: flat scanlines or tiles, deep scanlines, no
-/// subsampling.
+/// What the engine reads: flat scanlines (subsampled channels too) or
+/// tiles, deep scanlines.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
     if header.deep && header.blocks.has_tiles() {
         return Err(file.error(
             "deep tiled files are not supported yet: only deep scanlines (flat tiled files are read)",
         ));
-    }
-    if let Some(c) = header
-        .channels
-        .list
-        .iter()
-        .find(|c| c.sampling.x() != 1 || c.sampling.y() != 1)
-    {
-        return Err(file.error(format!(
-            "channel {} is subsampled, which is not supported",
-            c.name
-        )));
     }
     if matches!(
         header.compression,

@@ -184,7 +184,9 @@ impl<W: Write> Write for Counting<W> {
 /// The magic number, version and flags, and each header's attributes
 /// sorted by name; checked as the exr crate checks what it writes.
 pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
-    let mut requirements = MetaData::validate(headers, false)?;
+    // The crate's validation refuses subsampled channels; their rules were
+    // checked where they were read (`subsampling::restore`).
+    let mut requirements = MetaData::validate(&super::subsampling::unsampled(headers), false)?;
     requirements.file_format_version = 2;
     let mut bytes = exr::meta::magic_number::BYTES.to_vec();
     requirements.write(&mut bytes)?;
