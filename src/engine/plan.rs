@@ -243,6 +243,18 @@ pub fn plan_frame(job: &Job, sources: &FrameSources) -> Result<FramePlan> {
             op.check(&lists).map_err(located)?;
         }
     }
+    // Subsampled channels are carried, or turned into RGB first
+    // (`luminance_chroma`); an operation never reads them as they are.
+    for (n, node) in graph.nodes.iter().enumerate() {
+        let subsampled = channels[n].iter().find(|c| c.sampling != Vec2(1, 1));
+        if let (Node::Op { .. }, Some(c)) = (node, subsampled) {
+            return Err(located(format!(
+                "channel {} is subsampled and reaches an operation unconverted: a sequence's \
+                 frames must be all luminance/chroma or all RGB, as its first frame decides",
+                c.name
+            )));
+        }
+    }
     let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
     let window = windows[graph.output()];
     if window.size.area() == 0 {
