@@ -13,7 +13,7 @@
 
 use super::standard_attributes::Attribute;
 use exr::math::Vec2;
-use exr::meta::attribute::{ChannelList, IntegerBounds, Text};
+use exr::meta::attribute::{ChannelDescription, ChannelList, IntegerBounds, SampleType, Text};
 use exr::meta::header::Header;
 use exr::meta::{BlockDescription, MetaData};
 use exr::prelude::Compression;
@@ -254,11 +254,50 @@ pub fn decompress(
 /// (not ZIP: see `zip`).
 pub fn compress(header: &Header, data: Vec<u8>, rect: IntegerBounds) -> Result<Vec<u8>, String> {
     let codec = codec(header, rect)?;
-    header
+    let raw = data.len();
+    let packed = header
         .compression
-        .compress_image_section_to_le(&codec, data, rect)
-        .map_err(|e| e.to_string())
+        .compress_image_section_to_le(&codec, data.clone(), rect)
+        .map_err(|e| e.to_string())?;
+    if header.compression != Compression::PXR24 || packed.len() == raw {
+        return Ok(packed);
+    }
+    // The crate's PXR24 deflates a buffer sized for every channel at full
+    // resolution, the subsampled samples followed by zeros. OpenEXR reads
+    // that, but it is not the format: deflated again without the zeros.
+    let width = |c: &ChannelDescription| match c.sample_type {
+        SampleType::F16 => 2,
+        SampleType::F32 => 3,
+        SampleType::U32 => 4,
+    };
+    let full: usize = codec.channels.list.iter().map(width).sum::<usize>() * rect.size.area();
+    let (x0, y0, x1, y1) = (
+        rect.position.x(),
+        rect.position.y(),
+        rect.end().x(),
+        rect.end().y(),
+    );
+    let true_size: usize = codec
+        .channels
+        .list
+        .iter()
+        .map(|c| width(c) * count(c.sampling.x(), x0, x1) * count(c.sampling.y(), y0, y1))
+        .sum();
+    let mut inflated = vec![0; full];
+    let n = libdeflater::Decompressor::new()
+        .zlib_decompress(&packed, &mut inflated)
+        .map_err(|e| format!("PXR24 re-deflate: {e}"))?;
+    if n < true_size {
+        return Err(format!("PXR24 block of {n} bytes, {true_size} expected"));
+    }
+    let mut out = Vec::new();
+    super::deflate::zlib_compress(&inflated[..true_size], PXR24_LEVEL, &mut out);
+    Ok(if out.len() < raw { out } else { data })
 }
+
+/// libdeflate's level for re-deflated PXR24 blocks (zlib's default level 6
+/// compresses about as well).
+const PXR24_LEVEL: u8 = 6;
 
 #[cfg(test)]
 mod tests {
