@@ -466,3 +466,94 @@ fn a_tiled_luminance_file_is_grey_too() {
         assert_eq!(&half_bits(&over, name), luminance, "{name}");
     }
 }
+
+/// A python with PyPI's OpenEXR (`$EXRCOMP_OPENEXR_PYTHON`, else `python3`),
+/// or `None` (a skipped check).
+fn openexr_python() -> Option<String> {
+    let python = std::env::var("EXRCOMP_OPENEXR_PYTHON").unwrap_or_else(|_| "python3".into());
+    let found = std::process::Command::new(&python)
+        .args(["-c", "import OpenEXR, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        common::missing(&format!("{python} cannot import PyPI's OpenEXR and numpy"));
+    }
+    found.then_some(python)
+}
+
+#[test]
+fn files_openexr_writes_in_every_compression_are_read_or_refused_clearly() {
+    let Some(python) = openexr_python() else {
+        return;
+    };
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/peers/openexr_subsampled.py");
+    let peer = |args: &[&str]| {
+        std::process::Command::new(&python)
+            .arg(&script)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let files = dir.path();
+    assert!(peer(&["write", s(files)]).status.success());
+    for prefix in ["yc", "yca"] {
+        let source = files.join(format!("{prefix}_none.exr"));
+        let reference = raw(&source);
+        for compression in [
+            "none", "rle", "zips", "zip", "piz", "pxr24", "dwaa", "b44", "b44a",
+        ] {
+            let input = files.join(format!("{prefix}_{compression}.exr"));
+            let decoded = files.join(format!("{prefix}_{compression}-none.exr"));
+            let out = run(&[
+                "transcode",
+                s(&input),
+                "-o",
+                s(&decoded),
+                "--compression",
+                "none",
+                "-q",
+            ]);
+            if compression.starts_with("b44") {
+                let message = stderr(&out);
+                assert!(
+                    !out.status.success() && message.trim().lines().count() == 1,
+                    "{message}"
+                );
+                assert!(
+                    message.contains(s(&input)) && message.contains(compression),
+                    "{message}"
+                );
+                continue;
+            }
+            assert!(out.status.success(), "{compression}: {}", stderr(&out));
+            let ours = raw(&decoded);
+            if compression == "dwaa" {
+                // Lossy: the samples are OpenEXR's decoding, so only the layout is compared.
+                assert_eq!(
+                    ours.channels.keys().collect::<Vec<_>>(),
+                    reference.channels.keys().collect::<Vec<_>>()
+                );
+                continue;
+            }
+            assert_eq!(ours.channels, reference.channels, "{prefix} {compression}");
+            // What we write, OpenEXR reads back sample for sample.
+            let written = files.join(format!("{prefix}_ours_{compression}.exr"));
+            exrcomp_ok(&[
+                "transcode",
+                s(&source),
+                "-o",
+                s(&written),
+                "--compression",
+                compression,
+                "-q",
+            ]);
+            let same = peer(&["same", s(&source), s(&written)]);
+            assert!(
+                same.status.success(),
+                "{prefix} {compression}: {}",
+                String::from_utf8_lossy(&same.stderr)
+            );
+        }
+    }
+}

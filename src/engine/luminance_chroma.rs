@@ -307,8 +307,7 @@ impl<'a> Chroma<'a> {
                 let yca = if v.rem_euclid(2) == 0 {
                     own
                 } else {
-                    let taps: Vec<Vec<Rgba>> =
-                        (0..14).map(|k| line(v - 13 + 2 * k as i32)).collect();
+                    let taps: Vec<Vec<Rgba>> = (0..14).map(|k| line(v - 13 + 2 * k)).collect();
                     let filter = |i: usize, pick: fn(&Rgba) -> f16| {
                         let mut sum = 0.0f32;
                         for (k, tap) in TAPS.iter().enumerate() {

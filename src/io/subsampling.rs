@@ -196,7 +196,7 @@ pub fn block_bytes(channels: &ChannelList, rect: IntegerBounds) -> usize {
 fn codec_header(header: &Header, rect: IntegerBounds) -> Option<Header> {
     let bytes = block_bytes(&header.channels, rect);
     let area = rect.size.area();
-    if area == 0 || bytes % area != 0 {
+    if area == 0 || !bytes.is_multiple_of(area) {
         return None;
     }
     let mut channels = header.channels.clone();
