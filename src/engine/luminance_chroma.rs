@@ -268,21 +268,10 @@ impl<'a> Chroma<'a> {
                     };
                 }
                 let at = |k: usize| (j - 13 + 2 * k as i64).clamp(0, n - 2) as usize;
-                let filter = |c: &[f16]| {
-                    let mut sum = 0.0f32;
-                    for (k, tap) in TAPS.iter().enumerate() {
-                        sum = if k == 0 {
-                            c[at(k)].to_f32() * tap
-                        } else {
-                            sum + c[at(k)].to_f32() * tap
-                        };
-                    }
-                    f16::from_f32(sum)
-                };
                 Rgba {
-                    r: filter(&r),
+                    r: filter(|k| r[at(k)]),
                     g: g[i],
-                    b: filter(&b),
+                    b: filter(|k| b[at(k)]),
                 }
             })
             .collect()
@@ -293,38 +282,34 @@ impl<'a> Chroma<'a> {
     /// the others with their chroma filled in between the chroma lines
     /// (reconstructChromaVert), then YCAtoRGBA.
     fn rgb(&self, from: i32, to: i32) -> Vec<Vec<Rgba>> {
-        // Each chroma line needed, filled in along once.
+        // Each line read (clamped), its chroma filled in along once.
         let first = from - REACH as i32;
         let mut along: Vec<Option<Vec<Rgba>>> = vec![None; (to - first + REACH as i32) as usize];
-        let mut line = |v: i32| -> Vec<Rgba> {
+        for v in from - 13..to + 13 {
             let s = self.source(v);
-            let slot = &mut along[(s - first) as usize];
-            slot.get_or_insert_with(|| self.along(s)).clone()
+            along[(s - first) as usize].get_or_insert_with(|| self.along(s));
+        }
+        let line = |v: i32| {
+            along[(self.source(v) - first) as usize]
+                .as_deref()
+                .expect("read above")
         };
         (from..to)
             .map(|v| {
                 let own = line(v);
-                let yca = if v.rem_euclid(2) == 0 {
-                    own
-                } else {
-                    let taps: Vec<Vec<Rgba>> = (0..14).map(|k| line(v - 13 + 2 * k)).collect();
-                    let filter = |i: usize, pick: fn(&Rgba) -> f16| {
-                        let mut sum = 0.0f32;
-                        for (k, tap) in TAPS.iter().enumerate() {
-                            let value = pick(&taps[k][i]).to_f32() * tap;
-                            sum = if k == 0 { value } else { sum + value };
-                        }
-                        f16::from_f32(sum)
-                    };
-                    (0..own.len())
-                        .map(|i| Rgba {
-                            r: filter(i, |p| p.r),
+                if v.rem_euclid(2) == 0 {
+                    return own.iter().map(|p| self.to_rgb(*p)).collect();
+                }
+                let taps: Vec<&[Rgba]> = (0..14).map(|k| line(v - 13 + 2 * k)).collect();
+                (0..own.len())
+                    .map(|i| {
+                        self.to_rgb(Rgba {
+                            r: filter(|k| taps[k][i].r),
                             g: own[i].g,
-                            b: filter(i, |p| p.b),
+                            b: filter(|k| taps[k][i].b),
                         })
-                        .collect()
-                };
-                yca.iter().map(|p| self.to_rgb(*p)).collect()
+                    })
+                    .collect()
             })
             .collect()
     }
@@ -376,6 +361,17 @@ impl<'a> Chroma<'a> {
             }
         }
     }
+}
+
+/// The reconstruction filter over the 14 samples `sample(0..14)`, summed in
+/// OpenEXR's order from the first product on (a sum started at 0 would turn
+/// a -0 result into +0), rounded to half.
+fn filter(sample: impl Fn(usize) -> f16) -> f16 {
+    let mut sum = sample(0).to_f32() * TAPS[0];
+    for (k, tap) in TAPS.iter().enumerate().skip(1) {
+        sum += sample(k).to_f32() * tap;
+    }
+    f16::from_f32(sum)
 }
 
 /// `max` and `min` as std::max and std::min compare (the first unless the
