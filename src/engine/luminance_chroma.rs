@@ -408,16 +408,18 @@ fn saturation(p: &Rgba) -> f32 {
 /// most that mean's limit, keeping its luminance.
 fn fix_saturation(weights: [f32; 3], lines: [&[Rgba]; 3]) -> Vec<Rgba> {
     let n = lines[1].len();
-    let side = |line: &[Rgba], i: i64| saturation(&line[i.clamp(0, n as i64 - 1) as usize]);
+    let [above, below] =
+        [lines[0], lines[2]].map(|l| l.iter().map(saturation).collect::<Vec<f32>>());
+    let side = |line: &[f32], i: i64| line[i.clamp(0, n as i64 - 1) as usize];
     (0..n)
         .map(|i| {
             let j = i as i64;
             let mean = min(
                 1.0,
-                0.25 * (side(lines[0], j - 1)
-                    + side(lines[0], j + 1)
-                    + side(lines[2], j - 1)
-                    + side(lines[2], j + 1)),
+                0.25 * (side(&above, j - 1)
+                    + side(&above, j + 1)
+                    + side(&below, j - 1)
+                    + side(&below, j + 1)),
             );
             let pixel = lines[1][i];
             let s = saturation(&pixel);
