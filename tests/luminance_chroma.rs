@@ -557,3 +557,26 @@ fn files_openexr_writes_in_every_compression_are_read_or_refused_clearly() {
         }
     }
 }
+
+#[test]
+fn a_data_window_the_sampling_does_not_divide_is_refused() {
+    let mut bytes = std::fs::read(sample("YcaOffset.exr")).unwrap();
+    let name = b"dataWindow\0box2i\0";
+    let at = bytes.windows(name.len()).position(|w| w == name).unwrap() + name.len() + 4;
+    // xMax one less: 37 columns, not a multiple of RY's and BY's 2.
+    let x_max = i32::from_le_bytes(bytes[at + 8..at + 12].try_into().unwrap()) - 1;
+    bytes[at + 8..at + 12].copy_from_slice(&x_max.to_le_bytes());
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("odd.exr");
+    std::fs::write(&path, bytes).unwrap();
+    let out = run(&["info", s(&path)]);
+    let message = stderr(&out);
+    assert!(
+        !out.status.success() && message.trim().lines().count() == 1,
+        "{message}"
+    );
+    assert!(
+        message.contains("odd.exr") && message.contains("sampling 2 2"),
+        "{message}"
+    );
+}
