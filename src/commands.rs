@@ -1,18 +1,20 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
 use crate::cli::{Command, Composite, Farm, LayerArgs, Morph, OneInput, RunArgs};
-use crate::engine::graph::{Graph, Op};
+use crate::engine::graph::{Graph, Node, Op};
 use crate::engine::interrupt;
+use crate::engine::luminance_chroma;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
-use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job};
+use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job, Source};
 use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::resolve;
 use crate::error::{Error, Kind, Result};
 use crate::farm;
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::overwrite::refuse_overwriting;
-use crate::io::parts::split_part;
+use crate::io::parts::{choose_part, split_part};
+use crate::io::reader::ExrFile;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::blur;
@@ -468,6 +470,8 @@ fn input_job(
         check_all_parts(texts, &parts, layers)?;
     }
     let resolved = resolve(&inputs, &frames, run.missing)?;
+    let luminance = luminance_inputs(&inputs, &parts, layers, &graph, &resolved.frames);
+    let graph = luminance_chroma::colour_inputs(graph, &luminance);
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
         inputs,
@@ -512,6 +516,37 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
         ));
     }
     Ok(())
+}
+
+/// Per input, the luminance weights of its first frame when the job has
+/// operations and that frame is luminance/chroma or luminance only: the
+/// operations read it as RGB. A frame that cannot be read is left to the run.
+fn luminance_inputs(
+    inputs: &[FramePattern],
+    parts: &[Option<String>],
+    layers: &LayerArgs,
+    graph: &Graph,
+    frames: &[FrameSources],
+) -> Vec<Option<[f32; 3]>> {
+    if !graph.nodes.iter().any(|n| matches!(n, Node::Op { .. })) {
+        return vec![None; inputs.len()];
+    }
+    (0..inputs.len())
+        .map(|i| {
+            let frame = frames.iter().find_map(|f| match f.inputs[i] {
+                Source::Frame(frame) => Some(frame),
+                Source::Black(_) => None,
+            })?;
+            let file = ExrFile::open(&inputs[i].path(frame), None).ok()?;
+            let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref()).ok()?;
+            let header = file.header(part);
+            luminance_chroma::is_luminance(header).then(|| {
+                luminance_chroma::luminance_weights(
+                    header.shared_attributes.chromaticities.as_ref(),
+                )
+            })
+        })
+        .collect()
 }
 
 fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {

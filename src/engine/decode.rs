@@ -8,8 +8,10 @@ use super::deep_input::DeepInput;
 use super::strip::{Extent, Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
+use crate::io::subsampling;
 use crate::io::tiles::{self, Level};
 use exr::block::UncompressedBlock;
+use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use rayon::prelude::*;
@@ -199,6 +201,7 @@ impl InputCursor {
         let lines = self.level.block.y() as i32;
         self.deep.is_none()
             && self.carried.is_empty()
+            && !subsampling::any(header)
             && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)
             && w.position.x() <= columns.0
             && w.end().x() >= columns.0 + columns.1 as i32
@@ -326,8 +329,14 @@ fn copy_block(
     let mut offset = 0;
     for line in 0..block.index.pixel_size.y() {
         let y = block_top + line as i32;
-        for (c, channel) in strip.channels.iter().enumerate() {
+        for c in 0..strip.channels.len() {
+            let channel = &strip.channels[c];
             let size = channel.sample_type.bytes_per_sample();
+            if channel.sampling != Vec2(1, 1) {
+                offset +=
+                    copy_subsampled(&block.data[offset..], (line_x, width), y, c, strip, rows);
+                continue;
+            }
             if rows.contains(&y) && count > 0 {
                 let start = strip.row_range(y).start + column;
                 let from = offset + skip * size;
@@ -338,4 +347,40 @@ fn copy_block(
             offset += width * size;
         }
     }
+}
+
+/// Copies the samples of subsampled channel `c` that line `y` of a block
+/// holds (from `data` on; the block's line covers `columns`, x and width) to
+/// their pixels in `strip` (whose other pixels stay zero); returns the bytes
+/// they take.
+fn copy_subsampled(
+    data: &[u8],
+    columns: (i32, usize),
+    y: i32,
+    c: usize,
+    strip: &mut Rows,
+    rows: &Range<i32>,
+) -> usize {
+    let channel = &strip.channels[c];
+    let (xs, size) = (channel.sampling.x(), channel.sample_type.bytes_per_sample());
+    if !subsampling::holds_line(channel.sampling.y(), y) {
+        return 0;
+    }
+    let (x0, x1) = (columns.0, columns.0 + columns.1 as i32);
+    let samples = subsampling::count(xs, x0, x1);
+    if rows.contains(&y) {
+        let first = x0 + (xs as i32 - x0.rem_euclid(xs as i32)) % xs as i32;
+        let row = strip.row_range(y).start;
+        let (left, right) = (strip.x, strip.x + strip.width as i32);
+        for k in 0..samples {
+            let x = first + (k * xs) as i32;
+            if x >= left && x < right {
+                let at = row + (x - left) as usize;
+                strip.planes[c]
+                    .bytes_mut(at..at + 1)
+                    .copy_from_slice(&data[k * size..(k + 1) * size]);
+            }
+        }
+    }
+    samples * size
 }

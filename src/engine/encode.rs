@@ -3,12 +3,13 @@
 use super::plan::output_grid;
 use super::strip::Rows;
 use crate::error::{Error, Result};
-use crate::io::zip;
+use crate::io::{subsampling, zip};
 use exr::block::chunk::{
     Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
 };
 use exr::block::{BlockIndex, UncompressedBlock};
 use exr::math::Vec2;
+use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::Compression;
 use rayon::prelude::*;
@@ -46,6 +47,7 @@ pub fn encode_rows(
         })
         .collect();
     let headers = std::slice::from_ref(header);
+    let subsampled = subsampling::any(header);
     let first = first_row / lines;
     let blocks: Vec<(usize, usize)> = (first..first + rows.height.div_ceil(lines))
         .flat_map(|row| (0..grid.blocks.x()).map(move |column| (column, row)))
@@ -59,36 +61,51 @@ pub fn encode_rows(
             let y1 = (y0 + lines as i32).min(rows.end());
             let x0 = column * block_width;
             let width = block_width.min(rows.width - x0);
-            let mut data =
-                Vec::with_capacity(width * (y1 - y0) as usize * header.channels.bytes_per_pixel);
+            let rect = IntegerBounds::new((rows.x + x0 as i32, y0), (width, (y1 - y0) as usize));
+            let mut data = Vec::with_capacity(subsampling::block_bytes(&header.channels, rect));
             for y in y0..y1 {
                 let start = rows.row_range(y).start + x0;
-                for &p in &planes {
-                    data.extend_from_slice(rows.planes[p].bytes(start..start + width));
+                for (&p, channel) in planes.iter().zip(&header.channels.list) {
+                    let plane = &rows.planes[p];
+                    if channel.sampling == Vec2(1, 1) {
+                        data.extend_from_slice(plane.bytes(start..start + width));
+                    } else if subsampling::holds_line(channel.sampling.y(), y) {
+                        // The samples at the columns that are multiples of the sampling.
+                        let xs = channel.sampling.x() as i32;
+                        let first = (xs - rect.position.x().rem_euclid(xs)) % xs;
+                        (start + first as usize..start + width)
+                            .step_by(xs as usize)
+                            .for_each(|i| data.extend_from_slice(plane.bytes(i..i + 1)));
+                    }
                 }
             }
-            if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
-                let packed = zip::compress(&data, zip_level).unwrap_or(data);
-                let compressed_block = match header.blocks.has_tiles() {
-                    true => CompressedBlock::Tile(CompressedTileBlock {
-                        coordinates: TileCoordinates {
-                            tile_index: Vec2(column, row),
-                            level_index: Vec2(0, 0),
-                        },
-                        compressed_pixels_le: packed,
-                    }),
-                    false => CompressedBlock::ScanLine(CompressedScanLineBlock {
-                        y_coordinate: y0,
-                        compressed_pixels_le: packed,
-                    }),
-                };
-                return Ok(IndexedChunk {
-                    index,
-                    chunk: Chunk {
-                        layer_index: 0,
-                        compressed_block,
+            // Our own codecs' output as the block's chunk.
+            let chunk = |packed: Vec<u8>| IndexedChunk {
+                index,
+                chunk: Chunk {
+                    layer_index: 0,
+                    compressed_block: match header.blocks.has_tiles() {
+                        true => CompressedBlock::Tile(CompressedTileBlock {
+                            coordinates: TileCoordinates {
+                                tile_index: Vec2(column, row),
+                                level_index: Vec2(0, 0),
+                            },
+                            compressed_pixels_le: packed,
+                        }),
+                        false => CompressedBlock::ScanLine(CompressedScanLineBlock {
+                            y_coordinate: y0,
+                            compressed_pixels_le: packed,
+                        }),
                     },
-                });
+                },
+            };
+            if matches!(header.compression, Compression::ZIP1 | Compression::ZIP16) {
+                return Ok(chunk(zip::compress(&data, zip_level).unwrap_or(data)));
+            }
+            if subsampled {
+                let packed = subsampling::compress(header, data, rect)
+                    .map_err(|e| Error::internal(format!("cannot compress block: {e}")))?;
+                return Ok(chunk(packed));
             }
             let block = UncompressedBlock {
                 index: BlockIndex {

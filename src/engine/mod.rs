@@ -6,6 +6,7 @@ pub mod deep_input;
 pub mod encode;
 pub mod graph;
 pub mod interrupt;
+pub mod luminance_chroma;
 pub mod passthrough;
 pub mod pipeline;
 pub mod plan;

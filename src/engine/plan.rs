@@ -297,6 +297,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             op.check(&lists).map_err(located)?;
         }
     }
+    // Subsampled channels are carried, or turned into RGB first
+    // (`luminance_chroma`); an operation never reads them as they are.
+    for (n, node) in graph.nodes.iter().enumerate() {
+        let subsampled = channels[n].iter().find(|c| c.sampling != Vec2(1, 1));
+        if let (Node::Op { .. }, Some(c)) = (node, subsampled) {
+            return Err(located(format!(
+                "channel {} is subsampled and reaches an operation unconverted: a sequence's \
+                 frames must be all luminance/chroma or all RGB, as its first frame decides",
+                c.name
+            )));
+        }
+    }
     let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
     let window = windows[graph.output()];
     if window.size.area() == 0 {
@@ -357,6 +369,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             "has {} parts: --rows renders bands of single-part outputs only, and the other parts \
              would be lost",
             inputs[i].meta.headers.len()
+        )));
+    }
+    if let Some(message) = crate::io::subsampling::any(&header)
+        .then(|| crate::io::subsampling::refused(header.compression))
+        .flatten()
+    {
+        let source = match job.header_base {
+            HeaderBase::Input(i) => inputs[i].path.display().to_string(),
+            HeaderBase::New(_) => "the result".into(),
+        };
+        return Err(Error::usage(format!(
+            "frame {frame}: {source} has subsampled channels for the output: {message}"
         )));
     }
     // The output's block rows: scanline blocks, or tile rows.
@@ -581,21 +605,10 @@ fn deep_input(
     Ok(Some(Arc::new(DeepInput::new(files, levels))))
 }
 
-/// What the engine reads: flat or deep, scanlines or tiles, no
-/// subsampling.
+/// What the engine reads: flat or deep, scanlines or tiles, subsampled
+/// channels in flat scanlines.
 fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
     let header = file.header(part);
-    if let Some(c) = header
-        .channels
-        .list
-        .iter()
-        .find(|c| c.sampling.x() != 1 || c.sampling.y() != 1)
-    {
-        return Err(file.error(format!(
-            "channel {} is subsampled, which is not supported",
-            c.name
-        )));
-    }
     if matches!(
         header.compression,
         Compression::HTJ2K32 | Compression::HTJ2K256

@@ -8,6 +8,7 @@ pub mod reader;
 pub mod sequence;
 pub mod standard_attributes;
 pub mod stitch;
+pub mod subsampling;
 pub mod tiles;
 pub mod writer;
 pub mod zip;

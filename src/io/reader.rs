@@ -6,7 +6,7 @@
 //! memory map would kill the process with SIGBUS.
 
 use super::deep::DeepChunk;
-use super::{tiles, zip};
+use super::{standard_attributes, subsampling, tiles, zip};
 use crate::error::{Error, Result};
 use crate::guard::catch_panic;
 use exr::block::chunk::{
@@ -115,13 +115,26 @@ impl ExrFile {
             .len();
 
         let header = || BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
-        super::standard_attributes::check(&mut header()).map_err(err)?;
-        let mut reader = header();
-        let meta = catch_panic(|| MetaData::read_from_buffered(&mut reader, false))
+        let attributes = standard_attributes::attributes(&mut header());
+        standard_attributes::check(&attributes).map_err(err)?;
+        // The crate refuses subsampled channels: it parses them as 1 1, and
+        // their sampling is set back once it has validated the rest.
+        let sampled = subsampling::find(&file, &attributes);
+        let mut reader = BufReader::with_capacity(
+            16 << 10,
+            subsampling::Unsampled {
+                inner: ReadFrom { file: &file, at: 0 },
+                at: 0,
+                sampled: &sampled,
+            },
+        );
+        let mut meta = catch_panic(|| MetaData::read_from_buffered(&mut reader, false))
             .map_err(|p| err(format!("not a readable EXR header (decoder panic: {p})")))?
             .map_err(|e| err(format!("not a readable EXR header: {e}")))?;
         let table_start = reader.get_ref().at - reader.buffer().len() as u64;
         validate(&meta).map_err(|e| err(format!("invalid EXR header: {e}")))?;
+        subsampling::restore(&mut meta, &sampled)
+            .map_err(|e| err(format!("invalid EXR header: {e}")))?;
 
         let total_chunks: usize = meta.headers.iter().map(|h| h.chunk_count).sum();
         let table_end = (total_chunks as u64)
@@ -349,12 +362,8 @@ impl ExrFile {
             // Deep sizes are checked where they are unpacked (`io::deep`).
             _ => return Ok(()),
         };
-        let size = block_index(header, part, block)?.pixel_size;
-        check_inflation(
-            header.compression,
-            packed,
-            size.area() * header.channels.bytes_per_pixel,
-        )
+        let index = block_index(header, part, block)?;
+        check_inflation(header.compression, packed, raw_size(header, &index))
     }
 
     /// Chunk `index` of a ZIP or ZIPS `part`, checked to decompress (size and
@@ -385,16 +394,14 @@ impl ExrFile {
     fn zip_chunk(&self, part: usize, index: usize) -> Result<(CompressedBlock, usize)> {
         let block = self.read_chunk(part, index)?.compressed_block;
         let header = self.header(part);
-        let size = block_index(header, part, &block)
-            .map_err(|m| self.undecodable(index, m))?
-            .pixel_size;
+        let at = block_index(header, part, &block).map_err(|m| self.undecodable(index, m))?;
         if !matches!(
             block,
             CompressedBlock::ScanLine(_) | CompressedBlock::Tile(_)
         ) {
             return Err(self.error(format!("chunk {index} is not a flat block")));
         }
-        Ok((block, size.area() * header.channels.bytes_per_pixel))
+        Ok((block, raw_size(header, &at)))
     }
 
     fn undecodable(&self, index: usize, message: impl std::fmt::Display) -> Error {
@@ -422,7 +429,7 @@ impl ExrFile {
             ) => {
                 let at = block_index(header, part, &chunk.compressed_block)
                     .map_err(|m| self.undecodable(index, m))?;
-                let expected = at.pixel_size.area() * header.channels.bytes_per_pixel;
+                let expected = raw_size(header, &at);
                 let data = if packed.len() == expected {
                     packed.clone()
                 } else {
@@ -430,11 +437,22 @@ impl ExrFile {
                 };
                 UncompressedBlock { index: at, data }
             }
+            // The crate's codecs, told the true size of a subsampled block.
+            (CompressedBlock::ScanLine(block), _) if subsampling::any(header) => {
+                let at = block_index(header, part, &chunk.compressed_block)
+                    .map_err(|m| self.undecodable(index, m))?;
+                let packed = block.compressed_pixels_le.clone();
+                let data =
+                    catch_panic(|| subsampling::decompress(header, packed, absolute(header, &at)))
+                        .map_err(|p| self.error(format!("chunk {index}: decoder panic: {p}")))?
+                        .map_err(|m| self.undecodable(index, m))?;
+                UncompressedBlock { index: at, data }
+            }
             _ => catch_panic(|| UncompressedBlock::decompress_chunk(chunk, &self.meta, false))
                 .map_err(|p| self.error(format!("chunk {index}: decoder panic: {p}")))?
                 .map_err(|e| self.error(format!("chunk {index} does not decompress: {e}")))?,
         };
-        let expected = block.index.pixel_size.area() * header.channels.bytes_per_pixel;
+        let expected = raw_size(header, &block.index);
         if block.data.len() != expected {
             return Err(self.error(format!(
                 "chunk {index} decompresses to {} bytes instead of {expected}",
@@ -603,6 +621,27 @@ fn packed_pixels(block: &CompressedBlock) -> &[u8] {
         CompressedBlock::ScanLine(b) => &b.compressed_pixels_le,
         CompressedBlock::Tile(b) => &b.compressed_pixels_le,
         _ => &[],
+    }
+}
+
+/// Where a flat scanline block lies in the image (absolute coordinates).
+pub fn absolute(header: &Header, index: &BlockIndex) -> IntegerBounds {
+    let origin = header.own_attributes.layer_position;
+    IntegerBounds::new(
+        (
+            origin.x() + index.pixel_position.x() as i32,
+            origin.y() + index.pixel_position.y() as i32,
+        ),
+        index.pixel_size,
+    )
+}
+
+/// The bytes a flat block decompresses to (fewer where channels are
+/// subsampled).
+pub fn raw_size(header: &Header, index: &BlockIndex) -> usize {
+    match subsampling::any(header) {
+        true => subsampling::block_bytes(&header.channels, absolute(header, index)),
+        false => index.pixel_size.area() * header.channels.bytes_per_pixel,
     }
 }
 

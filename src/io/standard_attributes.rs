@@ -30,17 +30,19 @@ const MAX_NAME: usize = 256;
 
 const MULTIPART_FLAG: u8 = 0x10;
 
-/// Checks the types of the standard attributes in every header of `file`
-/// (read from the magic number on; only the headers are read). A header too
-/// damaged to walk is left to the full parse, which reports it.
-pub fn check(file: &mut impl BufRead) -> Result<(), String> {
-    let found = attributes(file);
+/// Checks the types of the standard attributes among a file's `found`
+/// attributes (`attributes`). A header too damaged to walk is left to the
+/// full parse, which reports it.
+pub fn check(found: &[Attribute]) -> Result<(), String> {
     let multipart = found.iter().any(|a| a.part > 0);
-    for Attribute { part, name, kind } in found {
-        let Some((_, wanted)) = REQUIRED.iter().find(|(n, _)| *n == name) else {
+    for Attribute {
+        part, name, kind, ..
+    } in found
+    {
+        let Some((_, wanted)) = REQUIRED.iter().find(|(n, _)| n == name) else {
             continue;
         };
-        if kind != *wanted {
+        if kind != wanted {
             let place = if multipart {
                 format!("part {part}: ")
             } else {
@@ -60,6 +62,9 @@ pub struct Attribute {
     pub name: String,
     /// Its type name.
     pub kind: String,
+    /// Where its value starts in the file, and its size in bytes.
+    pub at: u64,
+    pub size: u64,
 }
 
 /// Every attribute of every header of `file`, read from its start, in file
@@ -71,16 +76,21 @@ pub fn attributes(file: &mut impl BufRead) -> Vec<Attribute> {
         return found;
     }
     let multipart = start[5] & MULTIPART_FLAG != 0;
+    let mut at = start.len() as u64;
     for part in 0.. {
         loop {
-            let name = match text(file) {
-                Some(name) if !name.is_empty() => name,
-                Some(_) => break,
+            let (name, name_bytes) = match text(file) {
+                Some((name, _)) if name.is_empty() => {
+                    at += 1;
+                    break;
+                }
+                Some(name) => name,
                 None => return found,
             };
-            let Some(kind) = text(file) else {
+            let Some((kind, kind_bytes)) = text(file) else {
                 return found;
             };
+            at += name_bytes + kind_bytes + 4;
             let mut size = [0u8; 4];
             if file.read_exact(&mut size).is_err() {
                 return found;
@@ -92,7 +102,14 @@ pub fn attributes(file: &mut impl BufRead) -> Vec<Attribute> {
             if skipped.ok() != Some(size) {
                 return found;
             }
-            found.push(Attribute { part, name, kind });
+            found.push(Attribute {
+                part,
+                name,
+                kind,
+                at,
+                size,
+            });
+            at += size;
         }
         // A header ends with a null byte (read above); in a multi-part file,
         // an empty header, one more null byte, ends the list.
@@ -106,18 +123,24 @@ pub fn attributes(file: &mut impl BufRead) -> Vec<Attribute> {
     found
 }
 
-/// A null-terminated name of at most `MAX_NAME` bytes.
-fn text(file: &mut impl BufRead) -> Option<String> {
+/// A null-terminated name of at most `MAX_NAME` bytes, and the bytes it
+/// takes (with the null).
+fn text(file: &mut impl BufRead) -> Option<(String, u64)> {
     let mut bytes = Vec::new();
     file.take(MAX_NAME as u64 + 1)
         .read_until(0, &mut bytes)
         .ok()?;
-    (bytes.pop() == Some(0)).then(|| String::from_utf8_lossy(&bytes).into_owned())
+    let taken = bytes.len() as u64;
+    (bytes.pop() == Some(0)).then(|| (String::from_utf8_lossy(&bytes).into_owned(), taken))
 }
 
 #[cfg(test)]
 mod tests {
-    use super::check;
+    use super::attributes;
+
+    fn check(bytes: &mut &[u8]) -> Result<(), String> {
+        super::check(&attributes(bytes))
+    }
 
     /// A header of `attributes` (name, type, value size), zero-filled values.
     fn header(multipart: bool, parts: &[&[(&str, &str, usize)]]) -> Vec<u8> {

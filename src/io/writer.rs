@@ -197,7 +197,9 @@ impl<W: Write> Write for Counting<W> {
 /// The magic number, version and flags, and each header's attributes
 /// sorted by name; checked as the exr crate checks what it writes.
 pub fn header_bytes(headers: &[Header]) -> exr::error::Result<Vec<u8>> {
-    let requirements = requirements(headers)?;
+    // The crate's validation refuses subsampled channels; their rules were
+    // checked where they were read (`subsampling::restore`).
+    let requirements = requirements(&super::subsampling::unsampled(headers))?;
     let mut bytes = exr::meta::magic_number::BYTES.to_vec();
     requirements.write(&mut bytes)?;
     for header in headers {

@@ -1,0 +1,582 @@
+//! Luminance/chroma files (`Y` with `RY`, `BY` at sampling 2 2, as OpenEXR's
+//! RgbaOutputFile writes them) and luminance-only ones: read, carried bit for
+//! bit, and turned into RGB as OpenEXR's RgbaInputFile does where a job
+//! composites them. The samples are parsed here from uncompressed files by a
+//! reader of the test's own, and the RGB reference is computed here, whole
+//! image, from ImfRgbaFile.cpp and ImfRgbaYca.cpp.
+
+mod common;
+
+use common::{public_image, run, s, shipped_images, stderr, Samples};
+use half::f16;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// A single-part uncompressed scanline file's samples, parsed from its bytes.
+struct Raw {
+    x: i32,
+    y: i32,
+    width: usize,
+    height: usize,
+    /// Per channel: sampling and samples (half channels only), row-major at
+    /// the channel's own resolution.
+    channels: BTreeMap<String, ((usize, usize), Vec<u16>)>,
+    /// red, green, blue, white (x, y), when the file has them.
+    chromaticities: Option<[f32; 8]>,
+}
+
+fn raw(path: &Path) -> Raw {
+    let bytes = std::fs::read(path).unwrap();
+    let int = |at: usize| i32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
+    let mut at = 8;
+    let mut list = Vec::new();
+    let (mut window, mut chromaticities, mut compression) = ([0; 4], None, 255);
+    let text = |at: &mut usize| {
+        let end = *at + bytes[*at..].iter().position(|&b| b == 0).unwrap();
+        let t = String::from_utf8(bytes[*at..end].to_vec()).unwrap();
+        *at = end + 1;
+        t
+    };
+    loop {
+        let name = text(&mut at);
+        if name.is_empty() {
+            break;
+        }
+        let _kind = text(&mut at);
+        let size = int(at) as usize;
+        let value = at + 4;
+        match name.as_str() {
+            "channels" => {
+                let mut c = value;
+                while bytes[c] != 0 {
+                    let name = text(&mut c);
+                    assert_eq!(int(c), 1, "half channels only");
+                    list.push((name, (int(c + 8) as usize, int(c + 12) as usize)));
+                    c += 16;
+                }
+            }
+            "dataWindow" => window = [0, 1, 2, 3].map(|k| int(value + 4 * k)),
+            "compression" => compression = bytes[value],
+            "chromaticities" => {
+                chromaticities = Some([0, 1, 2, 3, 4, 5, 6, 7].map(|k| {
+                    f32::from_le_bytes(bytes[value + 4 * k..value + 4 * k + 4].try_into().unwrap())
+                }))
+            }
+            _ => {}
+        }
+        at = value + size;
+    }
+    assert_eq!(
+        compression,
+        0,
+        "{}: uncompressed files only",
+        path.display()
+    );
+    let (x, y) = (window[0], window[1]);
+    let (width, height) = ((window[2] - x + 1) as usize, (window[3] - y + 1) as usize);
+    let count = |step: usize, from: i32, n: usize| {
+        (from..from + n as i32)
+            .filter(|v| v.rem_euclid(step as i32) == 0)
+            .count()
+    };
+    let mut channels: BTreeMap<String, ((usize, usize), Vec<u16>)> = list
+        .iter()
+        .map(|(n, s)| (n.clone(), (*s, Vec::new())))
+        .collect();
+    // The offset table (one chunk per line), then chunks: y, size, data.
+    at += 8 * height;
+    for line in 0..height as i32 {
+        assert_eq!(int(at), y + line);
+        let mut data = at + 8;
+        at = data + int(at + 4) as usize;
+        for (name, (xs, ys)) in &list {
+            if (y + line).rem_euclid(*ys as i32) != 0 {
+                continue;
+            }
+            let samples = &mut channels.get_mut(name).unwrap().1;
+            for _ in 0..count(*xs, x, width) {
+                samples.push(u16::from_le_bytes([bytes[data], bytes[data + 1]]));
+                data += 2;
+            }
+        }
+        assert_eq!(data, at, "line {line}'s samples fill its chunk");
+    }
+    Raw {
+        x,
+        y,
+        width,
+        height,
+        channels,
+        chromaticities,
+    }
+}
+
+const TAPS: [f32; 14] = [
+    0.002128, -0.007540, 0.019597, -0.043159, 0.087929, -0.186077, 0.627123, 0.627123, -0.186077,
+    0.087929, -0.043159, 0.019597, -0.007540, 0.002128,
+];
+
+fn h(v: f32) -> f32 {
+    f16::from_f32(v).to_f32()
+}
+
+/// RgbaInputFile's R, G, B of a luminance/chroma file (half bits, row-major
+/// over the data window), computed whole image.
+fn reference_rgb(image: &Raw) -> [Vec<u16>; 3] {
+    let (w, hh) = (image.width, image.height);
+    let half = |bits: u16| f16::from_bits(bits).to_f32();
+    let luminance = &image.channels["Y"].1;
+    // Chroma at full resolution: samples at even (relative) x of even lines.
+    let chroma = |name: &str| -> Vec<f32> {
+        let mut full = vec![0.0; w * hh];
+        if let Some((_, samples)) = image.channels.get(name) {
+            for (k, &bits) in samples.iter().enumerate() {
+                full[(k / (w / 2)) * 2 * w + (k % (w / 2)) * 2] = half(bits);
+            }
+        }
+        full
+    };
+    let (ry, by) = (chroma("RY"), chroma("BY"));
+    // computeYw from RGBtoXYZ (Y = 1).
+    let c = image
+        .chromaticities
+        .unwrap_or([0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290]);
+    let [rx, ry_, gx, gy, bx, by_, wx, wy] = c;
+    let (x_, z_) = (wx / wy, (1.0 - wx - wy) / wy);
+    let d = rx * (by_ - gy) + bx * (gy - ry_) + gx * (ry_ - by_);
+    let sr = (x_ * (by_ - gy) - gx * ((by_ - 1.0) + by_ * (x_ + z_))
+        + bx * ((gy - 1.0) + gy * (x_ + z_)))
+        / d;
+    let sg = (x_ * (ry_ - by_) + rx * ((by_ - 1.0) + by_ * (x_ + z_))
+        - bx * ((ry_ - 1.0) + ry_ * (x_ + z_)))
+        / d;
+    let sb = (x_ * (gy - ry_) - rx * ((gy - 1.0) + gy * (x_ + z_))
+        + gx * ((ry_ - 1.0) + ry_ * (x_ + z_)))
+        / d;
+    let m = [sr * ry_, sg * gy, sb * by_];
+    let sum = m[0] + m[1] + m[2];
+    let yw = [m[0] / sum, m[1] / sum, m[2] / sum];
+
+    // readYCAScanLine's clamp of lines, padTmpBuf's of columns.
+    let line = |v: i64| -> usize {
+        if v < 0 {
+            0
+        } else if v > hh as i64 - 1 {
+            hh - 2
+        } else {
+            v as usize
+        }
+    };
+    let filtered = |get: &dyn Fn(i64) -> f32, at: i64| {
+        let mut acc = get(at - 13) * TAPS[0];
+        for (k, tap) in TAPS.iter().enumerate().skip(1) {
+            acc += get(at - 13 + 2 * k as i64) * tap;
+        }
+        h(acc)
+    };
+    // Chroma filled in along each even line.
+    let along = |plane: &[f32], row: usize| -> Vec<f32> {
+        let get = |x: i64| plane[row * w + x.clamp(0, w as i64 - 2) as usize];
+        (0..w as i64)
+            .map(|x| match x % 2 {
+                0 => get(x),
+                _ => filtered(&get, x),
+            })
+            .collect()
+    };
+    let rows: Vec<[Vec<f32>; 2]> = (0..hh)
+        .map(|r| match r % 2 {
+            0 => [along(&ry, r), along(&by, r)],
+            _ => [Vec::new(), Vec::new()],
+        })
+        .collect();
+    // Lines -1 ..= hh in RGB (halves), before the saturation fix.
+    let rgb_line = |v: i64| -> Vec<[f32; 3]> {
+        let own = line(v);
+        (0..w)
+            .map(|x| {
+                let (cr, cb) = if v.rem_euclid(2) == 0 {
+                    (rows[own][0][x], rows[own][1][x])
+                } else {
+                    let r = filtered(&|u| rows[line(u)][0][x], v);
+                    let b = filtered(&|u| rows[line(u)][1][x], v);
+                    (r, b)
+                };
+                let y = half(luminance[own * w + x]);
+                if cr == 0.0 && cb == 0.0 {
+                    return [y, y, y];
+                }
+                let r = (cr + 1.0) * y;
+                let b = (cb + 1.0) * y;
+                let g = (y - r * yw[0] - b * yw[2]) / yw[1];
+                [h(r), h(g), h(b)]
+            })
+            .collect()
+    };
+    let lines: Vec<Vec<[f32; 3]>> = (-1..=hh as i64).map(rgb_line).collect();
+    let saturation = |p: [f32; 3]| {
+        let high = p[0].max(p[1]).max(p[2]);
+        let low = p[0].min(p[1]).min(p[2]);
+        if high > 0.0 {
+            1.0 - low / high
+        } else {
+            0.0
+        }
+    };
+    let mut out = [vec![0u16; w * hh], vec![0u16; w * hh], vec![0u16; w * hh]];
+    for v in 0..hh {
+        let (above, this, below) = (&lines[v], &lines[v + 1], &lines[v + 2]);
+        for x in 0..w {
+            let side = |l: &Vec<[f32; 3]>, dx: i64| {
+                saturation(l[(x as i64 + dx).clamp(0, w as i64 - 1) as usize])
+            };
+            let mean = (0.25
+                * (side(above, -1) + side(above, 1) + side(below, -1) + side(below, 1)))
+            .min(1.0);
+            let p = this[x];
+            let s = saturation(p);
+            let most = (1.0 - (1.0 - mean) * 0.25).min(1.0);
+            let fixed = if s > mean && s > most {
+                let f = most / s;
+                let high = p[0].max(p[1]).max(p[2]);
+                let mut o = p.map(|c| h((high - (high - c) * f).max(0.0)));
+                let lum_in = p[0] * yw[0] + p[1] * yw[1] + p[2] * yw[2];
+                let lum_out = o[0] * yw[0] + o[1] * yw[1] + o[2] * yw[2];
+                if lum_out > 0.0 {
+                    o = o.map(|c| h(c * (lum_in / lum_out)));
+                }
+                o
+            } else {
+                p
+            };
+            for c in 0..3 {
+                out[c][v * w + x] = f16::from_f32(fixed[c]).to_bits();
+            }
+        }
+    }
+    out
+}
+
+/// The half bits of channel `name` of an RGB output (read by the exr crate).
+fn half_bits(path: &Path, name: &str) -> Vec<u16> {
+    match &common::read_image(path).channels[name] {
+        Samples::F16(v) => v.iter().map(|s| s.to_bits()).collect(),
+        other => panic!("{name} is not half: {other:?}"),
+    }
+}
+
+fn sample(name: &str) -> std::path::PathBuf {
+    shipped_images().join("Generated").join(name)
+}
+
+fn exrcomp_ok(args: &[&str]) {
+    let out = run(args);
+    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+}
+
+#[test]
+fn subsampled_channels_are_carried_bit_for_bit_through_every_lossless_compression() {
+    let input = sample("YcaOffset.exr");
+    let original = raw(&input);
+    assert_eq!(original.channels["RY"].0, (2, 2));
+    let dir = tempfile::tempdir().unwrap();
+    for compression in ["none", "rle", "zips", "zip", "piz", "pxr24"] {
+        let coded = dir.path().join(format!("{compression}.exr"));
+        let back = dir.path().join(format!("{compression}-none.exr"));
+        exrcomp_ok(&[
+            "transcode",
+            s(&input),
+            "-o",
+            s(&coded),
+            "--compression",
+            compression,
+            "-q",
+        ]);
+        exrcomp_ok(&[
+            "transcode",
+            s(&coded),
+            "-o",
+            s(&back),
+            "--compression",
+            "none",
+            "-q",
+        ]);
+        let again = raw(&back);
+        assert_eq!((again.x, again.y), (original.x, original.y));
+        assert_eq!(again.channels, original.channels, "{compression}");
+        // OpenEXR parses it (oiiotool refuses subsampled channels).
+        if let Some(exrheader) = common::peer("exrheader") {
+            common::succeed(std::process::Command::new(exrheader).arg(&coded));
+        }
+    }
+}
+
+#[test]
+fn b44_of_subsampled_channels_is_refused_naming_the_file_and_the_compression() {
+    let input = sample("YcaOffset.exr");
+    let dir = tempfile::tempdir().unwrap();
+    for compression in ["b44", "b44a"] {
+        let output = dir.path().join("out.exr");
+        let out = run(&[
+            "transcode",
+            s(&input),
+            "-o",
+            s(&output),
+            "--compression",
+            compression,
+        ]);
+        let message = stderr(&out);
+        assert!(!out.status.success());
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        assert!(
+            message.contains("YcaOffset.exr") && message.contains(compression),
+            "{message}"
+        );
+        assert!(!output.exists());
+    }
+}
+
+#[test]
+fn operations_read_luminance_chroma_as_openexrs_rgba_interface_does() {
+    let input = sample("YcaOffset.exr");
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("copy.exr");
+    // `copy` gives its first input as it is: the RGB of the file.
+    exrcomp_ok(&[
+        "merge",
+        "--op",
+        "copy",
+        s(&input),
+        s(&input),
+        "-o",
+        s(&output),
+        "-q",
+    ]);
+    let expected = reference_rgb(&raw(&input));
+    for (c, name) in ["R", "G", "B"].iter().enumerate() {
+        assert!(half_bits(&output, name) == expected[c], "{name} differs");
+    }
+    // Alpha is carried as it is.
+    let alpha: Vec<u16> = half_bits(&output, "A");
+    assert_eq!(alpha, raw(&input).channels["A"].1);
+}
+
+#[test]
+fn a_luminance_only_image_is_grey() {
+    let input = sample("LuminanceOnly.exr");
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("over.exr");
+    exrcomp_ok(&["over", s(&input), s(&input), "-o", s(&output), "-q"]);
+    let luminance = &raw(&input).channels["Y"].1;
+    for name in ["R", "G", "B"] {
+        assert_eq!(&half_bits(&output, name), luminance, "{name}");
+    }
+}
+
+#[test]
+fn mt_tam_north_reads_carries_and_composites() {
+    let Some(path) = public_image("../exr-images-more/LuminanceChroma/MtTamNorth.exr") else {
+        return;
+    };
+    // info: the channels as exrheader prints them, and every chunk decodes.
+    let out = run(&["info", s(&path)]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        text.contains("    RY, 16-bit floating-point, sampling 2 2\n"),
+        "{text}"
+    );
+    assert!(text.contains("pixels: all 25 chunks decode"), "{text}");
+    if let Some(exrheader) = common::peer("exrheader") {
+        let theirs = common::succeed(std::process::Command::new(exrheader).arg(&path));
+        let theirs = String::from_utf8_lossy(&theirs.stdout).to_string();
+        let channels = |t: &str| {
+            t.lines()
+                .skip_while(|l| !l.starts_with("channels"))
+                .take(4)
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        assert_eq!(channels(&text), channels(&theirs));
+    }
+    // Carried: PIZ to ZIP to none is PIZ to none, sample for sample.
+    let dir = tempfile::tempdir().unwrap();
+    let (zip, direct, back) = (
+        dir.path().join("z.exr"),
+        dir.path().join("n.exr"),
+        dir.path().join("zn.exr"),
+    );
+    exrcomp_ok(&[
+        "transcode",
+        s(&path),
+        "-o",
+        s(&zip),
+        "--compression",
+        "zip",
+        "-q",
+    ]);
+    exrcomp_ok(&[
+        "transcode",
+        s(&zip),
+        "-o",
+        s(&back),
+        "--compression",
+        "none",
+        "-q",
+    ]);
+    exrcomp_ok(&[
+        "transcode",
+        s(&path),
+        "-o",
+        s(&direct),
+        "--compression",
+        "none",
+        "-q",
+    ]);
+    let decoded = raw(&direct);
+    assert_eq!(raw(&back).channels, decoded.channels);
+    // Over itself: its RGB, as RgbaInputFile reads it.
+    let over = dir.path().join("over.exr");
+    exrcomp_ok(&["over", s(&path), s(&path), "-o", s(&over), "-q"]);
+    let expected = reference_rgb(&decoded);
+    for (c, name) in ["R", "G", "B"].iter().enumerate() {
+        assert!(half_bits(&over, name) == expected[c], "{name} differs");
+    }
+}
+
+#[test]
+fn a_tiled_luminance_file_is_grey_too() {
+    let Some(path) = public_image("../exr-images-more/LuminanceChroma/Garden.exr") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (over, plain) = (dir.path().join("over.exr"), dir.path().join("plain.exr"));
+    exrcomp_ok(&["over", s(&path), s(&path), "-o", s(&over), "-q"]);
+    exrcomp_ok(&[
+        "transcode",
+        s(&path),
+        "-o",
+        s(&plain),
+        "--compression",
+        "none",
+        "-q",
+    ]);
+    let luminance = &raw(&plain).channels["Y"].1;
+    for name in ["R", "G", "B"] {
+        assert_eq!(&half_bits(&over, name), luminance, "{name}");
+    }
+}
+
+/// A python with PyPI's OpenEXR (`$EXRCOMP_OPENEXR_PYTHON`, else `python3`),
+/// or `None` (a skipped check).
+fn openexr_python() -> Option<String> {
+    let python = std::env::var("EXRCOMP_OPENEXR_PYTHON").unwrap_or_else(|_| "python3".into());
+    let found = std::process::Command::new(&python)
+        .args(["-c", "import OpenEXR, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        common::missing(&format!("{python} cannot import PyPI's OpenEXR and numpy"));
+    }
+    found.then_some(python)
+}
+
+#[test]
+fn files_openexr_writes_in_every_compression_are_read_or_refused_clearly() {
+    let Some(python) = openexr_python() else {
+        return;
+    };
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/peers/openexr_subsampled.py");
+    let peer = |args: &[&str]| {
+        std::process::Command::new(&python)
+            .arg(&script)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let files = dir.path();
+    assert!(peer(&["write", s(files)]).status.success());
+    for prefix in ["yc", "yca"] {
+        let source = files.join(format!("{prefix}_none.exr"));
+        let reference = raw(&source);
+        for compression in [
+            "none", "rle", "zips", "zip", "piz", "pxr24", "dwaa", "b44", "b44a",
+        ] {
+            let input = files.join(format!("{prefix}_{compression}.exr"));
+            let decoded = files.join(format!("{prefix}_{compression}-none.exr"));
+            let out = run(&[
+                "transcode",
+                s(&input),
+                "-o",
+                s(&decoded),
+                "--compression",
+                "none",
+                "-q",
+            ]);
+            if compression.starts_with("b44") {
+                let message = stderr(&out);
+                assert!(
+                    !out.status.success() && message.trim().lines().count() == 1,
+                    "{message}"
+                );
+                assert!(
+                    message.contains(s(&input)) && message.contains(compression),
+                    "{message}"
+                );
+                continue;
+            }
+            assert!(out.status.success(), "{compression}: {}", stderr(&out));
+            let ours = raw(&decoded);
+            if compression == "dwaa" {
+                // Lossy: the samples are OpenEXR's decoding, so only the layout is compared.
+                assert_eq!(
+                    ours.channels.keys().collect::<Vec<_>>(),
+                    reference.channels.keys().collect::<Vec<_>>()
+                );
+                continue;
+            }
+            assert_eq!(ours.channels, reference.channels, "{prefix} {compression}");
+            // What we write, OpenEXR reads back sample for sample.
+            let written = files.join(format!("{prefix}_ours_{compression}.exr"));
+            exrcomp_ok(&[
+                "transcode",
+                s(&source),
+                "-o",
+                s(&written),
+                "--compression",
+                compression,
+                "-q",
+            ]);
+            let same = peer(&["same", s(&source), s(&written)]);
+            assert!(
+                same.status.success(),
+                "{prefix} {compression}: {}",
+                String::from_utf8_lossy(&same.stderr)
+            );
+        }
+    }
+}
+
+#[test]
+fn a_data_window_the_sampling_does_not_divide_is_refused() {
+    let mut bytes = std::fs::read(sample("YcaOffset.exr")).unwrap();
+    let name = b"dataWindow\0box2i\0";
+    let at = bytes.windows(name.len()).position(|w| w == name).unwrap() + name.len() + 4;
+    // xMax one less: 37 columns, not a multiple of RY's and BY's 2.
+    let x_max = i32::from_le_bytes(bytes[at + 8..at + 12].try_into().unwrap()) - 1;
+    bytes[at + 8..at + 12].copy_from_slice(&x_max.to_le_bytes());
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("odd.exr");
+    std::fs::write(&path, bytes).unwrap();
+    let out = run(&["info", s(&path)]);
+    let message = stderr(&out);
+    assert!(
+        !out.status.success() && message.trim().lines().count() == 1,
+        "{message}"
+    );
+    assert!(
+        message.contains("odd.exr") && message.contains("sampling 2 2"),
+        "{message}"
+    );
+}
