@@ -158,9 +158,9 @@ impl Footprints {
         };
         let rows = (0..radii)
             .map(|j| {
-                let within = (-reach..=reach).filter(|&dy| least(dy) < (j + 1) as f32);
+                let mut within = (-reach..=reach).filter(|&dy| least(dy) < (j + 1) as f32);
                 let first = within.clone().next().unwrap_or(1);
-                (first, within.last().unwrap_or(0))
+                (first, within.next_back().unwrap_or(0))
             })
             .collect();
         Footprints {
