@@ -1,5 +1,6 @@
 //! defocus, vblur and stereo against whole-image references written from
-//! specs/ops.md (exact: same formulas, same order of sums), across block
+//! specs/ops.md (vblur and stereo exact: same formulas, same order of sums;
+//! defocus's sums are made another way, so within half precision), across block
 //! sizes, strips, windows off zero and images shorter than the halo; and the
 //! properties the spec promises.
 
@@ -110,6 +111,26 @@ fn reference_defocus(img: &Img, focus: f32, scale: f32, max: usize, aperture: u3
     out
 }
 
+/// The colours within half precision (2^-11 relative) of the reference's,
+/// which sums in another order; the other channels and the rest identical.
+fn assert_within_half_precision(ours: &Img, reference: &Img) {
+    let mut exact = reference.clone();
+    for name in COLOURS {
+        let (a, b) = (&ours.channels[name], &reference.channels[name]);
+        for i in 0..b.len() {
+            let (a, b) = (a.get_f32(i), b.get_f32(i));
+            assert!(
+                (a - b).abs() <= b.abs() / 2048.0,
+                "{name} at sample {i}: {a} vs {b}"
+            );
+        }
+        exact
+            .channels
+            .insert(name.into(), ours.channels[name].clone());
+    }
+    assert_identical(ours, &exact);
+}
+
 #[test]
 fn defocus_equals_the_reference_for_apertures_blocks_strips_and_short_images() {
     let dir = tempfile::tempdir().unwrap();
@@ -140,7 +161,7 @@ fn defocus_equals_the_reference_for_apertures_blocks_strips_and_short_images() {
                 strip,
             ];
             let ours = exrcomp_on(d, &img, codec, &args);
-            assert_identical(&ours, &reference_defocus(&img, 6.0, 9.0, 5, aperture));
+            assert_within_half_precision(&ours, &reference_defocus(&img, 6.0, 9.0, 5, aperture));
         }
     }
 }

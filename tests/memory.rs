@@ -248,8 +248,8 @@ fn deep_tiled_peak_memory_does_not_grow_with_height() {
     write_deep_tiled(&d.join("short.0001.exr"), 1024, 512);
     write_deep_tiled(&d.join("tall.0001.exr"), 1024, 4096);
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let short = peak_runs(d, "flatten", &["short.####.exr"], "1", 3, true);
-    let tall = peak_runs(d, "flatten", &["tall.####.exr"], "1", 2, false);
+    let short = peak_runs(d, &["flatten"], &["short.####.exr"], "1", 3, true);
+    let tall = peak_runs(d, &["flatten"], &["tall.####.exr"], "1", 2, false);
     // 8 times the rows: 4 million samples, some 200 MB decoded and sorted
     // at once.
     assert!(

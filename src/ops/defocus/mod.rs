@@ -1,0 +1,141 @@
+//! Depth of field from a Z channel: each pixel spreads over an aperture of
+//! its circle of confusion. Formulas, the depth rule and how the sums are
+//! made in O(R) per pixel: specs/ops.md, "defocus".
+
+mod aperture;
+mod sums;
+#[cfg(test)]
+mod tests;
+
+pub use aperture::Aperture;
+
+use super::layers::Selection;
+use crate::engine::graph::Op;
+use crate::engine::strip::{Rows, RowsMut};
+use aperture::Footprints;
+use exr::meta::attribute::ChannelDescription;
+use sums::{sums, Sources, NEAR};
+
+pub struct Defocus {
+    /// Depth in focus.
+    pub focus: f32,
+    /// Radius in pixels far behind the focus plane (the CoC's scale).
+    pub scale: f32,
+    pub max_radius: usize,
+    pub aperture: Aperture,
+    pub z_channel: String,
+    pub layers: Selection,
+}
+
+impl Defocus {
+    /// Circle of confusion radius for depth `z`: S |1 - f / z|, clamped to
+    /// the maximum; 0 where the depth is not a positive number.
+    pub fn coc(&self, z: f32) -> f32 {
+        if z.is_nan() || z <= 0.0 {
+            return 0.0;
+        }
+        (self.scale * (1.0 - self.focus / z).abs()).min(self.max_radius as f32)
+    }
+
+    /// Rows `rows` of the input: depth, radius, layer and weighted colours
+    /// of `names`, over the valid columns.
+    fn sources(&self, input: &Rows, names: &[String], rows: std::ops::Range<i32>) -> Sources {
+        let (w, k) = (input.width, names.len() + 1);
+        let n = rows.len() * w;
+        let z = input.channel_index(&self.z_channel).expect("checked");
+        let planes: Vec<usize> = names
+            .iter()
+            .map(|name| input.channel_index(name).expect("listed"))
+            .collect();
+        let mut depth = vec![0.0f32; n];
+        let mut colours = vec![vec![0.0f32; w]; names.len()];
+        let mut radius = vec![0.0f32; n];
+        let mut layer = vec![NEAR; n];
+        let mut values = vec![0.0f64; n * k];
+        let valid = input.valid_columns();
+        for (i, y) in rows.clone().enumerate() {
+            let line = i * w..(i + 1) * w;
+            input.planes[z].read_f32(input.row_range(y), &mut depth[line.clone()]);
+            for (&c, colour) in planes.iter().zip(&mut colours) {
+                input.planes[c].read_f32(input.row_range(y), colour);
+            }
+            for x in valid.clone() {
+                let q = line.start + x;
+                let (d, r) = (depth[q], self.coc(depth[q]));
+                radius[q] = r;
+                // At or behind the focus plane the radius grows with depth.
+                if d > 0.0 && d >= self.focus {
+                    layer[q] = r as u32;
+                }
+                let weight = 1.0 / self.aperture.area(r);
+                values[q * k] = weight as f64;
+                for (c, colour) in colours.iter().enumerate() {
+                    values[q * k + 1 + c] = weight as f64 * colour[x] as f64;
+                }
+            }
+        }
+        Sources {
+            rows,
+            width: w,
+            k,
+            depth,
+            radius,
+            layer,
+            values,
+        }
+    }
+}
+
+impl Op for Defocus {
+    fn halo(&self) -> usize {
+        self.max_radius
+    }
+
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        inputs[0].to_vec()
+    }
+
+    fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
+        self.layers
+            .check_with(inputs[0], &[&self.z_channel], "depth")
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
+        let input = inputs[0];
+        let names = self.layers.filtered(&input.channels);
+        let r = self.max_radius as i32;
+        let held = input.valid_rows();
+        let rows = (out.y - r).max(held.start)..(out.end() + r).min(held.end);
+        let sources = self.sources(input, &names, rows);
+        let footprints = Footprints::new(self.aperture, r);
+        let (targets, columns) = (out.valid_rows(), out.valid_columns());
+        let sums = sums(&sources, &footprints, targets.clone(), columns.clone());
+        let k = names.len() + 1;
+        let mut result = vec![0.0f32; columns.len()];
+        for (i, y) in targets.enumerate() {
+            let range = out.row_range(y);
+            let row = &sums[i * columns.len() * k..(i + 1) * columns.len() * k];
+            for (c, channel) in out.channels.iter().enumerate() {
+                let name = channel.name.to_string();
+                match names.iter().position(|n| *n == name) {
+                    Some(n) => {
+                        for (value, sum) in result.iter_mut().zip(row.chunks(k)) {
+                            *value = (sum[1 + n] / sum[0]) as f32;
+                        }
+                        out.planes[c].write_f32(
+                            range.start + columns.start..range.start + columns.end,
+                            &result,
+                        );
+                    }
+                    None => {
+                        let s = input.channel_index(&name).expect("the input's channel");
+                        out.planes[c]
+                            .bytes_mut(range.clone())
+                            .copy_from_slice(input.planes[s].bytes(input.row_range(y)));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
