@@ -129,7 +129,12 @@ fn check_image(
             command.arg("-a");
         }
         let out = command.arg(a).arg(b).output().unwrap();
-        (!out.status.success()).then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+        // A file idiff cannot read (subsampled channels: tests/luminance_chroma.rs
+        // checks those) says so on stderr.
+        (!out.status.success()).then(|| {
+            String::from_utf8_lossy(&out.stdout).into_owned()
+                + &String::from_utf8_lossy(&out.stderr)
+        })
     };
     match (deep, oiiotool.is_some()) {
         // idiff compares no deep file with a flat one: against oiiotool's
