@@ -368,15 +368,7 @@ fn zip_pack(raw: &[u8]) -> Vec<u8> {
 fn exr_file(deep: bool, attributes: &[(&str, &str, Vec<u8>)], chunks: &[Vec<u8>]) -> Vec<u8> {
     let mut file = vec![0x76, 0x2f, 0x31, 0x01];
     file.extend((2u32 | if deep { 0x800 } else { 0 }).to_le_bytes());
-    for (name, kind, value) in attributes {
-        for text in [name, kind] {
-            file.extend(text.as_bytes());
-            file.push(0);
-        }
-        file.extend((value.len() as i32).to_le_bytes());
-        file.extend(value);
-    }
-    file.push(0);
+    common::put_attributes(&mut file, attributes);
     let mut offset = (file.len() + 8 * chunks.len()) as u64;
     for chunk in chunks {
         file.extend(offset.to_le_bytes());

@@ -202,15 +202,7 @@ fn write_deep_tiled(path: &Path, width: usize, height: usize) {
         ("type", "string", b"deeptile".to_vec()),
         ("version", "int", 1i32.to_le_bytes().to_vec()),
     ];
-    for (name, kind, value) in &attributes {
-        for text in [name, kind] {
-            file.extend(text.as_bytes());
-            file.push(0);
-        }
-        file.extend((value.len() as i32).to_le_bytes());
-        file.extend(value);
-    }
-    file.push(0);
+    common::put_attributes(&mut file, &attributes);
     let (across, down) = (width.div_ceil(tile), height.div_ceil(tile));
     let table_at = file.len();
     file.resize(table_at + 8 * across * down, 0);

@@ -892,3 +892,17 @@ pub fn hostile_run(
     };
     (ended.code, wrong)
 }
+
+/// Appends raw header attributes (name, type name, value bytes), as an EXR
+/// header lays them out, and the null byte that ends the header.
+pub fn put_attributes(file: &mut Vec<u8>, attributes: &[(&str, &str, Vec<u8>)]) {
+    for (name, kind, value) in attributes {
+        for text in [name, kind] {
+            file.extend(text.as_bytes());
+            file.push(0);
+        }
+        file.extend((value.len() as i32).to_le_bytes());
+        file.extend(value);
+    }
+    file.push(0);
+}
