@@ -373,6 +373,22 @@ fn a_luminance_only_image_is_grey() {
     }
 }
 
+/// The converting node sits between the inputs in the graph: each input must
+/// still be read with its own data window (the fuzzer's GrayRampsHorizontal
+/// over a 64x64 plate read the plate with the 800x800 one and panicked).
+#[test]
+fn a_luminance_image_over_a_smaller_plate_reads_the_plate_with_its_own_window() {
+    let input = sample("LuminanceOnly.exr");
+    let dir = tempfile::tempdir().unwrap();
+    let (plate, output) = (dir.path().join("plate.exr"), dir.path().join("over.exr"));
+    exrcomp_ok(&["generate", s(&plate), "--width", "8", "--height", "8", "-q"]);
+    exrcomp_ok(&["over", s(&input), s(&plate), "-o", s(&output), "-q"]);
+    // The luminance image has no alpha: opaque, it covers the plate.
+    let luminance = &raw(&input).channels["Y"].1;
+    for name in ["R", "G", "B"] {
+        assert_eq!(&half_bits(&output, name), luminance, "{name}");
+    }
+}
 #[test]
 fn mt_tam_north_reads_carries_and_composites() {
     let Some(path) = public_image("../exr-images-more/LuminanceChroma/MtTamNorth.exr") else {

@@ -163,7 +163,7 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         .enumerate()
         .map(|(i, file)| match &plan.deep[i] {
             Some(deep) => InputCursor::deep(file.clone(), plan.parts[i], deep.clone()),
-            None => InputCursor::new(file.clone(), plan.parts[i], plan.levels[i], plan.windows[i]),
+            None => InputCursor::new(file.clone(), plan.parts[i], plan.levels[i], plan.read[i]),
         })
         .collect();
     let window = plan.window();

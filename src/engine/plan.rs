@@ -137,6 +137,10 @@ pub struct FramePlan {
     pub levels: Vec<Level>,
     /// Per deep input, what flattens it as it is read.
     pub deep: Vec<Option<Arc<DeepInput>>>,
+    /// Per input, the data window read (empty for a black input); `windows`
+    /// is per graph node, whose indices are not the inputs' once converting
+    /// nodes are inserted.
+    pub read: Vec<IntegerBounds>,
     pub header: Header,
     /// Per node: channels and data window.
     pub channels: Vec<Vec<ChannelDescription>>,
@@ -309,7 +313,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             )));
         }
     }
-    let windows = graph.evaluate(input_window, |op, args| op.data_window(args));
+    let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
+    let windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
     let window = windows[graph.output()];
     if window.size.area() == 0 {
         return Err(Error::new(
@@ -481,6 +486,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         inputs,
         parts,
         levels,
+        read,
         deep,
         header,
         channels,
