@@ -1,7 +1,10 @@
-//! The command line.
+//! The command line: the operations' subcommands made from their
+//! declarations (src/ops/declare.rs), the other commands declared here.
 
+use crate::ops::declare::Operation;
 use crate::params::*;
-use clap::{Args, Parser, Subcommand, ValueHint};
+use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -20,218 +23,9 @@ pub struct Cli {
 
 #[derive(Subcommand)]
 pub enum Command {
-    /// Composite FG over BG: C = Cfg + (1 - Afg) Cbg (premultiplied).
-    Over {
-        /// Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr), with
-        /// `:PART` (name or index) to read one part of a multi-part file.
-        #[arg(value_hint = ValueHint::FilePath)]
-        fg: String,
-        /// Background: its header, display window and other channels are kept.
-        #[arg(value_hint = ValueHint::FilePath)]
-        bg: String,
-        #[command(flatten)]
-        with: Composite,
-    },
-    /// Merge A (top) with B (bottom) by an operator, as Nuke's Merge does.
-    Merge {
-        #[arg(long, value_enum)]
-        op: crate::ops::merge::MergeOp,
-        /// Top input: a file or sequence, `:PART` for a part.
-        #[arg(value_hint = ValueHint::FilePath)]
-        a: String,
-        /// Bottom input: its header, display window and other channels are kept.
-        #[arg(value_hint = ValueHint::FilePath)]
-        b: String,
-        /// Blend the result with B: 0 gives B, 1 the result.
-        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| MIX.parse::<f32>(t))]
-        mix: f32,
-        #[command(flatten)]
-        with: Composite,
-    },
-    /// Composite layers L1 over L2 over ... Ln in one pass (L1 on top).
-    Stack {
-        /// Two or more inputs, top first; the last one's header is kept.
-        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
-        inputs: Vec<String>,
-        #[command(flatten)]
-        with: Composite,
-    },
-    /// Multiply colour by alpha.
-    Premult(OneInput),
-    /// Divide colour by alpha (colour unchanged where alpha is 0).
-    Unpremult(OneInput),
-    /// Blur with a separable Gaussian or box of radius R (edges clamp to the
-    /// data window); `--radius R` is oiiotool's `--blur (2R+1)x(2R+1)`.
-    Blur {
-        #[command(flatten)]
-        one: OneInput,
-        #[arg(long, value_parser = |t: &str| BLUR_RADIUS.parse::<u32>(t))]
-        radius: u32,
-        #[arg(long, value_enum, default_value = "gaussian")]
-        filter: crate::ops::blur::Filter,
-    },
-    /// Depth of field from a depth channel: each pixel spreads over an
-    /// aperture whose radius grows with its distance from the focus plane.
-    Defocus {
-        #[command(flatten)]
-        one: OneInput,
-        /// Depth in focus.
-        #[arg(long, value_parser = |t: &str| FOCUS.parse::<f32>(t))]
-        focus: f32,
-        /// Blur radius in pixels of what is far behind the focus plane:
-        /// radius = scale * |1 - focus / Z|.
-        #[arg(long, value_parser = |t: &str| DEFOCUS_SCALE.parse::<f32>(t))]
-        scale: f32,
-        /// Largest radius (the rows read above and below).
-        #[arg(long, value_parser = |t: &str| MAX_RADIUS.parse::<u32>(t))]
-        max_radius: u32,
-        /// disc, hexagon, or N-gon (5-gon, 8-gon...).
-        #[arg(long, default_value = "disc", value_parser = crate::ops::defocus::Aperture::parse)]
-        aperture: crate::ops::defocus::Aperture,
-        #[arg(long, default_value = "Z")]
-        z_channel: String,
-    },
-    /// Motion blur from per-pixel displacement (pixels moved during the frame).
-    Vblur {
-        #[command(flatten)]
-        one: OneInput,
-        /// Scales the displacement: 0 for none, 1 as rendered.
-        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| VBLUR_SCALE.parse::<f32>(t))]
-        scale: f32,
-        /// The x and y displacement channels (y down, in pixels).
-        #[arg(long, default_value = "forward.u,forward.v", value_parser = parse_pair)]
-        vectors: (String, String),
-        /// Rows a streak may reach; without it, a first pass over the vectors
-        /// measures it. A longer streak is an error, never cut.
-        #[arg(long, value_parser = |t: &str| MAX_DISPLACEMENT.parse::<u32>(t))]
-        max_displacement: Option<u32>,
-    },
-    /// The other eye of a stereo pair from one view and its depth.
-    Stereo {
-        #[arg(value_hint = ValueHint::FilePath)]
-        input: String,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        /// The eye to make: pixels move right for the left eye, left for the right.
-        #[arg(long, value_enum)]
-        eye: crate::ops::stereo::Eye,
-        /// Shift in pixels at depth 1: a pixel at depth Z moves K / Z.
-        #[arg(long, allow_hyphen_values = true, value_parser = |t: &str| DISPARITY.parse::<f32>(t))]
-        disparity: f32,
-        #[arg(long, default_value = "Z")]
-        z_channel: String,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Depth-aware merge: per pixel the nearer sample goes over the farther
-    /// (alpha 0 never in front); Z becomes the nearer depth.
-    Zmerge {
-        /// Two or more inputs; the last one's header and other channels are kept.
-        #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
-        inputs: Vec<String>,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        #[arg(long, default_value = "Z")]
-        z_channel: String,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Differential rendering (Debevec): an object rendered into a plate
-    /// with the shadows and light it casts on a proxy of the real scene.
-    Diffrender {
-        /// I1: the object alone.
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        object: String,
-        /// I2: the proxy of the scene, without the object.
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        proxy: String,
-        /// I3: the proxy with the object's shadows (and light) on it.
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        with_shadows: String,
-        /// P: the real plate; its header and other channels are kept.
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        plate: String,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        /// G in P - G (I4 - I3).
-        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true, value_parser = |t: &str| SHADOW_GAIN.parse::<f32>(t))]
-        shadow_gain: f32,
-        /// Write I5 = (I1 over I2) - I3 instead, for grading.
-        #[arg(long)]
-        shadow_only: bool,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Colour-difference keyer: alpha from how far the screen channel rises
-    /// above the other two, the screen taken out of the colour.
-    Key {
-        #[arg(value_hint = ValueHint::FilePath)]
-        input: String,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        /// green, blue, or the screen's colour as R,G,B.
-        #[arg(long, default_value = "green", value_parser = parse_screen)]
-        screen: [f32; 3],
-        /// Scales the difference: above 1 more transparent.
-        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| GAIN.parse::<f32>(t))]
-        gain: f32,
-        /// Weight of the first other channel against the second (0..1).
-        #[arg(long, default_value_t = 0.5, value_parser = |t: &str| BALANCE.parse::<f32>(t))]
-        balance: f32,
-        /// Alpha at or below this becomes 0.
-        #[arg(long, default_value_t = 0.0, value_parser = |t: &str| CLIP.parse::<f32>(t))]
-        clip_black: f32,
-        /// Alpha at or above this becomes 1.
-        #[arg(long, default_value_t = 1.0, value_parser = |t: &str| CLIP.parse::<f32>(t))]
-        clip_white: f32,
-        /// Limit the screen channel to the other two (spill suppression).
-        #[arg(long)]
-        despill: bool,
-        /// 1 - alpha.
-        #[arg(long)]
-        invert: bool,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Difference matte: alpha from the difference with a clean plate.
-    Diffmatte {
-        #[arg(value_hint = ValueHint::FilePath)]
-        input: String,
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        clean_plate: String,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        /// Differences up to this are background (alpha 0).
-        #[arg(long, default_value_t = 0.05, value_parser = |t: &str| THRESHOLD.parse::<f32>(t))]
-        threshold: f32,
-        /// Alpha reaches 1 at threshold + softness.
-        #[arg(long, default_value_t = 0.1, value_parser = |t: &str| SOFTNESS.parse::<f32>(t))]
-        softness: f32,
-        #[arg(long)]
-        invert: bool,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Triangulation matting: one foreground over two known backgrounds gives
-    /// alpha and colour exactly.
-    Triangulate {
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        over_a: String,
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        bg_a: String,
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        over_b: String,
-        #[arg(value_hint = ValueHint::FilePath, long)]
-        bg_b: String,
-        #[arg(value_hint = ValueHint::FilePath, short, long)]
-        output: String,
-        #[command(flatten)]
-        run: RunArgs,
-    },
-    /// Shrink a matte: the smallest alpha within a disc of the radius.
-    Erode(Morph),
-    /// Grow a matte: the largest alpha within a disc of the radius.
-    Dilate(Morph),
+    /// The operations (src/ops), each made from its declaration.
+    #[command(flatten)]
+    Op(Invocation),
     /// Flatten a deep file: each pixel's samples composited front to back
     /// (any command reading a deep scanline input flattens it the same way).
     Flatten {
@@ -334,21 +128,6 @@ pub enum Command {
     },
 }
 
-/// What every compositing command takes besides its inputs.
-#[derive(Args)]
-pub struct Composite {
-    /// Output file or sequence.
-    #[arg(value_hint = ValueHint::FilePath, short, long)]
-    pub output: String,
-    /// Inputs and output are unpremultiplied (straight) colour.
-    #[arg(long)]
-    pub straight: bool,
-    #[command(flatten)]
-    pub layers: LayerArgs,
-    #[command(flatten)]
-    pub run: RunArgs,
-}
-
 #[derive(Subcommand)]
 pub enum Farm {
     /// An Open Job Description job template (`openjd check`, `openjd run`,
@@ -382,31 +161,6 @@ pub struct FarmJob {
     /// The exrcomp command to run, without --frames (after `--`).
     #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
     pub command: Vec<String>,
-}
-
-/// Erode and dilate.
-#[derive(Args)]
-pub struct Morph {
-    #[command(flatten)]
-    pub one: OneInput,
-    #[arg(long, value_parser = |t: &str| MORPH_RADIUS.parse::<u32>(t))]
-    pub radius: u32,
-    /// 1 - alpha afterwards.
-    #[arg(long)]
-    pub invert: bool,
-}
-
-/// An operation on one input.
-#[derive(Args)]
-pub struct OneInput {
-    #[arg(value_hint = ValueHint::FilePath)]
-    pub input: String,
-    #[arg(value_hint = ValueHint::FilePath, short, long)]
-    pub output: String,
-    #[command(flatten)]
-    pub layers: LayerArgs,
-    #[command(flatten)]
-    pub run: RunArgs,
 }
 
 /// Which layers, views and parts an operation works on.
@@ -492,25 +246,6 @@ pub struct RunArgs {
     pub strip_rows: Option<usize>,
 }
 
-/// A screen colour: `green`, `blue` or R,G,B.
-pub fn parse_screen(text: &str) -> Result<[f32; 3], String> {
-    match text.to_ascii_lowercase().as_str() {
-        "green" => return Ok([0.0, 1.0, 0.0]),
-        "blue" => return Ok([0.0, 0.0, 1.0]),
-        _ => {}
-    }
-    let values: Vec<f32> = text
-        .split(',')
-        .map(|v| SCREEN.parse::<f32>(v))
-        .collect::<Result<_, _>>()
-        .map_err(|m| format!("expected green, blue or R,G,B: {m}"))?;
-    match values[..] {
-        [r, g, b] if r.max(g).max(b) > r.min(g).min(b) => Ok([r, g, b]),
-        [_, _, _] => Err("a screen colour needs one channel above the others".into()),
-        _ => Err("expected green, blue or R,G,B".into()),
-    }
-}
-
 fn parse_rows(text: &str) -> Result<(i32, i32), String> {
     let bad = || "expected Y0-Y1 (rows Y0 to Y1, Y1 excluded)".to_string();
     let (a, b) = text.rsplit_once('-').ok_or_else(bad)?;
@@ -548,15 +283,148 @@ fn parse_level(text: &str) -> Result<exr::math::Vec2<usize>, String> {
     }
 }
 
-fn parse_pair(text: &str) -> Result<(String, String), String> {
-    let (x, y) = text.split_once(',').ok_or("expected X,Y")?;
-    Ok((x.trim().to_string(), y.trim().to_string()))
-}
-
 fn parse_origin(text: &str) -> Result<(i32, i32), String> {
     let (x, y) = text.split_once(',').ok_or("expected X,Y")?;
     Ok((
         x.trim().parse().map_err(|_| "bad X")?,
         y.trim().parse().map_err(|_| "bad Y")?,
     ))
+}
+
+/// An operation as the command line gave it.
+pub struct Invocation {
+    pub op: &'static Operation,
+    /// In the declared order (a repeated last input as often as given).
+    pub inputs: Vec<String>,
+    pub output: String,
+    /// The parameters given or defaulted, as text (switches: "true").
+    pub values: BTreeMap<&'static str, String>,
+    pub straight: bool,
+    pub layers: LayerArgs,
+    pub run: RunArgs,
+}
+
+/// `--max-radius` for `max_radius`.
+fn option_name(name: &str) -> String {
+    name.replace('_', "-")
+}
+
+/// An operation's subcommand: its inputs, `-o`, its parameters, then the
+/// shared options it takes.
+fn subcommand(op: &'static Operation) -> clap::Command {
+    let mut command = clap::Command::new(op.name).allow_negative_numbers(true);
+    for (i, input) in op.inputs.iter().enumerate() {
+        let mut arg = Arg::new(input.name)
+            .help(input.help)
+            .value_name(input.name.to_uppercase())
+            .value_hint(ValueHint::FilePath)
+            .required(true);
+        if input.named {
+            arg = arg.long(option_name(input.name));
+        }
+        if op.repeats && i + 1 == op.inputs.len() {
+            arg = arg.num_args(2..).action(ArgAction::Append);
+        }
+        command = command.arg(arg);
+    }
+    command = command.arg(
+        Arg::new("output")
+            .short('o')
+            .long("output")
+            .help("Output file or sequence")
+            .value_name("OUTPUT")
+            .value_hint(ValueHint::FilePath)
+            .required(true),
+    );
+    for param in op.params {
+        let mut arg = Arg::new(param.name)
+            .long(option_name(param.name))
+            .value_name(param.name.to_uppercase())
+            .help(param.help.trim());
+        if param.flag {
+            arg = arg.action(ArgAction::SetTrue);
+        } else {
+            let check = param.check;
+            arg = arg
+                .required(param.required())
+                .value_parser(move |text: &str| check(text).map(|()| text.to_string()));
+            if let Some(default) = param.default {
+                arg = arg.default_value(default);
+            }
+        }
+        // Merge's operator has always been `--op` on the command line.
+        if param.name == "operator" {
+            arg = arg.visible_alias("op");
+        }
+        command = command.arg(arg);
+    }
+    if op.straight {
+        command = command.arg(
+            Arg::new("straight")
+                .long("straight")
+                .action(ArgAction::SetTrue)
+                .help("Inputs and output are unpremultiplied (straight) colour"),
+        );
+    }
+    if op.layers {
+        command = LayerArgs::augment_args(command);
+    }
+    // After the shared options, whose own doc would be taken as the about.
+    RunArgs::augment_args(command).about(op.about)
+}
+
+impl FromArgMatches for Invocation {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        let unknown = || clap::Error::new(clap::error::ErrorKind::InvalidSubcommand);
+        let (name, m) = matches.subcommand().ok_or_else(unknown)?;
+        let op = crate::ops::find(name).ok_or_else(unknown)?;
+        let texts = |id: &str| -> Vec<String> {
+            m.get_many::<String>(id)
+                .into_iter()
+                .flatten()
+                .cloned()
+                .collect()
+        };
+        let values = op
+            .params
+            .iter()
+            .filter_map(|p| match p.flag {
+                true => m.get_flag(p.name).then(|| (p.name, "true".to_string())),
+                false => m.get_one::<String>(p.name).map(|v| (p.name, v.clone())),
+            })
+            .collect();
+        Ok(Invocation {
+            op,
+            inputs: op.inputs.iter().flat_map(|i| texts(i.name)).collect(),
+            output: texts("output").concat(),
+            values,
+            straight: op.straight && m.get_flag("straight"),
+            layers: match op.layers {
+                true => LayerArgs::from_arg_matches(m)?,
+                false => LayerArgs::default(),
+            },
+            run: RunArgs::from_arg_matches(m)?,
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(matches)?;
+        Ok(())
+    }
+}
+
+impl Subcommand for Invocation {
+    fn augment_subcommands(command: clap::Command) -> clap::Command {
+        crate::ops::ALL
+            .iter()
+            .fold(command, |command, op| command.subcommand(subcommand(op)))
+    }
+
+    fn augment_subcommands_for_update(command: clap::Command) -> clap::Command {
+        Self::augment_subcommands(command)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        crate::ops::find(name).is_some()
+    }
 }

@@ -1,7 +1,8 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, Composite, Farm, LayerArgs, Morph, OneInput, RunArgs};
-use crate::engine::graph::{Graph, Node, Op};
+use crate::cli::{Command, Farm, Invocation, LayerArgs, RunArgs};
+use crate::engine::graph::NodeId;
+use crate::engine::graph::{Graph, GraphBuilder, Node};
 use crate::engine::interrupt;
 use crate::engine::luminance_chroma;
 use crate::engine::pipeline;
@@ -17,17 +18,9 @@ use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
 use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
-use crate::ops::blur;
-use crate::ops::defocus::{Aperture, Defocus};
-use crate::ops::diffrender;
+use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
-use crate::ops::matte::{DiffMatte, Key, Matte, Pull};
-use crate::ops::merge::{push_stack, Merge, MergeOp};
-use crate::ops::morphology::Morphology;
-use crate::ops::premult::Premult;
-use crate::ops::stereo::Stereo;
-use crate::ops::vblur::VectorBlur;
-use crate::ops::zmerge::ZMerge;
+use crate::ops::{defocus, diffrender, merge, vblur};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
@@ -37,211 +30,7 @@ use std::sync::Mutex;
 
 pub fn run(command: Command) -> Result<()> {
     match command {
-        Command::Over { fg, bg, with } => merge(MergeOp::Over, 1.0, [fg, bg], with, "over"),
-        Command::Merge {
-            op,
-            a,
-            b,
-            mix,
-            with,
-        } => merge(op, mix, [a, b], with, "merge"),
-        Command::Stack { inputs, with } => {
-            let n = inputs.len();
-            let mut ops = Vec::new();
-            let layer_nodes: Vec<usize> = (0..n).collect();
-            push_stack(&mut ops, n, &layer_nodes, || {
-                merge_op(MergeOp::Over, with.straight, 1.0, &with.layers)
-            });
-            let graph = Graph::chain(n, ops);
-            let (job, summary) =
-                input_job(&inputs, &with.output, graph, n - 1, &with.layers, &with.run)?;
-            run_job(&job, "stack", &with.run, summary)
-        }
-        Command::Blur {
-            one,
-            radius,
-            filter,
-        } => {
-            let passes = blur::passes(filter, radius as usize, &selection(&one.layers), 0, 1);
-            let graph = Graph::chain(1, passes);
-            let (job, summary) =
-                input_job(&[one.input], &one.output, graph, 0, &one.layers, &one.run)?;
-            run_job(&job, "blur", &one.run, summary)
-        }
-        Command::Defocus {
-            one,
-            focus,
-            scale,
-            max_radius,
-            aperture,
-            z_channel,
-        } => {
-            let op = Defocus {
-                focus,
-                scale,
-                max_radius: max_radius as usize,
-                aperture,
-                z_channel,
-                layers: selection(&one.layers),
-            };
-            one_op(Box::new(op), one, "defocus")
-        }
-        Command::Vblur {
-            one,
-            scale,
-            vectors,
-            max_displacement,
-        } => {
-            let blur = |reach: usize| VectorBlur {
-                scale,
-                vectors: [vectors.0.clone(), vectors.1.clone()],
-                reach,
-                layers: selection(&one.layers),
-            };
-            let graph =
-                |reach| Graph::chain(1, vec![(Box::new(blur(reach)) as Box<dyn Op>, vec![0])]);
-            let reach = max_displacement.unwrap_or(0) as usize;
-            let (mut job, summary) = input_job(
-                std::slice::from_ref(&one.input),
-                &one.output,
-                graph(reach),
-                0,
-                &one.layers,
-                &one.run,
-            )?;
-            // A dry run reads no pixels.
-            if max_displacement.is_none() && !one.run.dry_run {
-                let measure = blur(0);
-                let names = [vectors.0.as_str(), vectors.1.as_str()];
-                let reach = max_over_rows(&job, 0, names, |u, v| measure.rows_reached(u, v))?;
-                job.graph = graph(reach);
-            }
-            run_job(&job, "vblur", &one.run, summary)
-        }
-        Command::Stereo {
-            input,
-            output,
-            eye,
-            disparity,
-            z_channel,
-            run,
-        } => {
-            let op = Stereo {
-                eye,
-                disparity,
-                z_channel,
-            };
-            let one = OneInput {
-                input,
-                output,
-                layers: LayerArgs::default(),
-                run,
-            };
-            one_op(Box::new(op), one, "stereo")
-        }
-        Command::Zmerge {
-            inputs,
-            output,
-            z_channel,
-            run,
-        } => {
-            let n = inputs.len();
-            let op: Box<dyn Op> = Box::new(ZMerge { z_channel });
-            let graph = Graph::chain(n, vec![(op, (0..n).collect())]);
-            let layers = LayerArgs::default();
-            let (job, summary) = input_job(&inputs, &output, graph, n - 1, &layers, &run)?;
-            run_job(&job, "zmerge", &run, summary)
-        }
-        Command::Diffrender {
-            object,
-            proxy,
-            with_shadows,
-            plate,
-            output,
-            shadow_gain,
-            shadow_only,
-            run,
-        } => {
-            let mut ops = Vec::new();
-            diffrender::push_steps(&mut ops, 4, [0, 1, 2, 3], shadow_gain, shadow_only);
-            let graph = Graph::chain(4, ops);
-            let inputs = [object, proxy, with_shadows, plate];
-            let layers = LayerArgs::default();
-            let (job, summary) = input_job(&inputs, &output, graph, 3, &layers, &run)?;
-            run_job(&job, "diffrender", &run, summary)
-        }
-        Command::Key {
-            input,
-            output,
-            screen,
-            gain,
-            balance,
-            clip_black,
-            clip_white,
-            despill,
-            invert,
-            run,
-        } => {
-            if clip_white <= clip_black {
-                return Err(Error::usage("--clip-white must be above --clip-black"));
-            }
-            let key = Key {
-                screen,
-                gain,
-                balance,
-                clip: (clip_black, clip_white),
-                despill,
-                invert,
-            };
-            let op: Box<dyn Op> = Box::new(Matte(Pull::Key(key)));
-            let one = OneInput {
-                input,
-                output,
-                layers: LayerArgs::default(),
-                run,
-            };
-            one_op(op, one, "key")
-        }
-        Command::Diffmatte {
-            input,
-            clean_plate,
-            output,
-            threshold,
-            softness,
-            invert,
-            run,
-        } => {
-            let matte = DiffMatte {
-                threshold,
-                softness,
-                invert,
-            };
-            let op: Box<dyn Op> = Box::new(Matte(Pull::Difference(matte)));
-            let graph = Graph::chain(2, vec![(op, vec![0, 1])]);
-            let layers = LayerArgs::default();
-            let (job, summary) =
-                input_job(&[input, clean_plate], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "diffmatte", &run, summary)
-        }
-        Command::Triangulate {
-            over_a,
-            bg_a,
-            over_b,
-            bg_b,
-            output,
-            run,
-        } => {
-            let op: Box<dyn Op> = Box::new(Matte(Pull::Triangulation));
-            let graph = Graph::chain(4, vec![(op, vec![0, 1, 2, 3])]);
-            let layers = LayerArgs::default();
-            let inputs = [over_a, bg_a, over_b, bg_b];
-            let (job, summary) = input_job(&inputs, &output, graph, 0, &layers, &run)?;
-            run_job(&job, "triangulate", &run, summary)
-        }
-        Command::Erode(morph) => morphology(false, morph),
-        Command::Dilate(morph) => morphology(true, morph),
-        Command::Premult(args) => premult(false, args),
-        Command::Unpremult(args) => premult(true, args),
+        Command::Op(call) => operation(call),
         Command::Stitch { bands, output } => {
             FramePattern::output(&output.to_string_lossy())?;
             refuse_overwriting(bands.clone(), [(None, output.clone())])?;
@@ -296,7 +85,7 @@ pub fn run(command: Command) -> Result<()> {
             run_job(&job, "run", &run, summary)
         }
         Command::Flatten { input, output, run } => {
-            let graph = Graph::chain(1, Vec::new());
+            let graph = Graph::identity();
             let layers = LayerArgs::default();
             let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
             run_job(&job, "flatten", &run, summary)
@@ -306,7 +95,7 @@ pub fn run(command: Command) -> Result<()> {
             output,
             run,
         } => {
-            let graph = Graph::chain(1, Vec::new());
+            let graph = Graph::identity();
             let layers = LayerArgs::default();
             if run.all_parts {
                 return Err(Error::usage(
@@ -327,7 +116,7 @@ pub fn run(command: Command) -> Result<()> {
             level,
             run,
         } => {
-            let graph = Graph::chain(1, Vec::new());
+            let graph = Graph::identity();
             let layers = LayerArgs {
                 level,
                 ..LayerArgs::default()
@@ -379,56 +168,50 @@ fn selection(layers: &LayerArgs) -> Selection {
     }
 }
 
-fn merge_op(op: MergeOp, straight: bool, mix: f32, layers: &LayerArgs) -> Box<dyn Op> {
-    Box::new(Merge {
-        op,
-        straight,
-        mix,
-        layers: selection(layers),
-    })
+/// An operation's job: its graph built from its declaration, after a first
+/// pass over the inputs for what it measures (none in a dry run).
+fn operation(call: Invocation) -> Result<()> {
+    let op = call.op;
+    let mut args = Args {
+        op: op.name,
+        values: call.values,
+        layers: selection(&call.layers),
+        straight: call.straight,
+        job_file: false,
+    };
+    let header = op.header.unwrap_or(call.inputs.len() - 1);
+    let job = |inputs: &[String], graph, header| {
+        input_job(inputs, &call.output, graph, header, &call.layers, &call.run)
+    };
+    if let (Some(measure), false) = (op.measure, call.run.dry_run) {
+        let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
+        args.values.extend(measure(&args, &first)?);
+    }
+    let (mut graph, inputs) = GraphBuilder::with_inputs(call.inputs.len());
+    (op.build)(&args, &mut graph, &inputs).map_err(Error::usage)?;
+    let (job, summary) = job(&call.inputs, graph.finish(), header)?;
+    run_job(&job, op.name, &call.run, summary)
 }
 
-fn merge(op: MergeOp, mix: f32, inputs: [String; 2], with: Composite, name: &str) -> Result<()> {
-    let merge = merge_op(op, with.straight, mix, &with.layers);
-    let graph = Graph::chain(2, vec![(merge, vec![0, 1])]);
-    let (job, summary) = input_job(&inputs, &with.output, graph, 1, &with.layers, &with.run)?;
-    run_job(&job, name, &with.run, summary)
-}
-
-fn premult(inverse: bool, args: OneInput) -> Result<()> {
-    let op: Box<dyn Op> = Box::new(Premult {
-        inverse,
-        layers: selection(&args.layers),
-    });
-    one_op(op, args, if inverse { "unpremult" } else { "premult" })
-}
-
-fn morphology(dilate: bool, morph: Morph) -> Result<()> {
-    let op: Box<dyn Op> = Box::new(Morphology {
-        radius: morph.radius as usize,
-        dilate,
-        invert: morph.invert,
-        layers: selection(&morph.one.layers),
-    });
-    one_op(op, morph.one, if dilate { "dilate" } else { "erode" })
+/// Operation `op` with parameters `values` (as typed) on `inputs`.
+fn add(
+    graph: &mut GraphBuilder,
+    op: &'static Operation,
+    values: &[(&'static str, &str)],
+    inputs: &[NodeId],
+) -> Result<NodeId> {
+    let args = Args {
+        op: op.name,
+        values: values.iter().map(|&(k, v)| (k, v.to_string())).collect(),
+        layers: Selection::default(),
+        straight: false,
+        job_file: false,
+    };
+    (op.build)(&args, graph, inputs).map_err(Error::usage)
 }
 
 fn working_folder() -> Result<PathBuf> {
     std::env::current_dir().map_err(|e| Error::usage(format!("no working folder: {e}")))
-}
-
-/// A job of one operation on one input.
-fn one_op(op: Box<dyn Op>, args: OneInput, name: &str) -> Result<()> {
-    let graph = Graph::chain(1, vec![(op, vec![0])]);
-    let (job, summary) = input_job(
-        &[args.input],
-        &args.output,
-        graph,
-        0,
-        &args.layers,
-        &args.run,
-    )?;
-    run_job(&job, name, &args.run, summary)
 }
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
@@ -581,7 +364,11 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
                 inputs: Vec::new(),
             })
             .collect(),
-        graph: Graph::chain(0, vec![(Box::new(plate) as Box<dyn Op>, Vec::new())]),
+        graph: {
+            let mut graph = GraphBuilder::default();
+            graph.add(plate, &[]);
+            graph.finish()
+        },
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
         tile: run.tile,
@@ -818,47 +605,21 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
         frames: Some(format!("{first}-{}", first + length as i64 - 1)),
         ..run.clone()
     };
-    let layers = Selection::default();
-    let motion = |reach| VectorBlur {
-        scale: 1.0,
-        vectors: ["forward.u".into(), "forward.v".into()],
-        reach,
-        layers: layers.clone(),
-    };
-    let graph = |reach| {
-        let defocus = Defocus {
-            focus: 5.0,
-            scale: 4.0,
-            max_radius: 4,
-            aperture: Aperture::Polygon(6),
-            z_channel: "Z".into(),
-            layers: layers.clone(),
-        };
-        let over = merge_op(MergeOp::Over, false, 1.0, &LayerArgs::default());
-        Graph::chain(
-            2,
-            vec![
-                (Box::new(motion(reach)) as Box<dyn Op>, vec![0]),
-                (Box::new(defocus), vec![1]),
-                (over, vec![2, 3]),
-            ],
-        )
-    };
     let inputs = [pattern("fg"), pattern("bg")];
     // Differential rendering: the ball and its shadow, rendered on a proxy
     // ground, put into the bg plate.
-    let mut ops = Vec::new();
-    diffrender::push_steps(&mut ops, 4, [0, 1, 2, 3], 1.0, false);
     let shot = [
         pattern("object"),
         pattern("proxy"),
         pattern("shadowed"),
         pattern("bg"),
     ];
+    let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
+    add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
     let (job, summary) = input_job(
         &shot,
         &pattern("diffrender"),
-        Graph::chain(4, ops),
+        graph.finish(),
         3,
         &LayerArgs::default(),
         &RunArgs {
@@ -879,19 +640,36 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
             pattern("comp")
         );
     }
-    let (mut job, summary) = input_job(
-        &inputs,
+    // The streaks' reach measured over the fg frames first.
+    let layers = LayerArgs::default();
+    let (fg, _) = input_job(
+        &inputs[..1],
         &pattern("comp"),
-        graph(0),
-        1,
-        &LayerArgs::default(),
+        Graph::identity(),
+        0,
+        &layers,
         &run,
     )?;
-    let measure = motion(0);
-    let reach = max_over_rows(&job, 0, ["forward.u", "forward.v"], |u, v| {
-        measure.rows_reached(u, v)
+    let reach = max_over_rows(&fg, 0, ["forward.u", "forward.v"], |u, v| {
+        vblur::rows_reached(1.0, u, v)
     })?;
-    job.graph = graph(reach);
+    let (mut graph, nodes) = GraphBuilder::with_inputs(inputs.len());
+    let reach = reach.to_string();
+    let moving = add(
+        &mut graph,
+        &vblur::VBLUR,
+        &[("max_displacement", &reach)],
+        &nodes[..1],
+    )?;
+    let defocus = [
+        ("focus", "5"),
+        ("scale", "4"),
+        ("max_radius", "4"),
+        ("aperture", "hexagon"),
+    ];
+    let defocused = add(&mut graph, &defocus::DEFOCUS, &defocus, &nodes[1..])?;
+    add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
+    let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &run)?;
     run_job(&job, "demo", &run, summary)
 }
 

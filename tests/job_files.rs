@@ -120,15 +120,21 @@ fn errors_name_the_job_file_line() {
         ("[[node]]\nname = \"m\"\nop = \"over\"\nmixx = 1\ninputs = [\"a\", \"b\"]\n", 12, "unknown field `mixx`"),
         ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\", \"m2\"]\n\n[[node]]\nname = \"m2\"\nop = \"over\"\ninputs = [\"b\", \"m\"]\n", 9, "cycle"),
         ("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"a\" \"b\"]\n", 12, ""),
-        // The command line's bounds hold in job files too.
-        ("[[node]]\nname = \"m\"\nop = \"blur\"\nradius = 1000000\ninputs = [\"a\"]\n", 9, "radius must be a number from 0 to 4096"),
-        ("[[node]]\nname = \"m\"\nop = \"over\"\nmix = nan\ninputs = [\"a\", \"b\"]\n", 9, "mix must be a number from 0 to 1, not NaN"),
-        ("[[node]]\nname = \"m\"\nop = \"vblur\"\nscale = inf\nmax_displacement = 4\ninputs = [\"a\"]\n", 9, "scale must be"),
-        ("[[node]]\nname = \"m\"\nop = \"vblur\"\nmax_displacement = 4000000000\ninputs = [\"a\"]\n", 9, "max_displacement must be"),
-        ("[[node]]\nname = \"m\"\nop = \"stereo\"\neye = \"left\"\ndisparity = 1e30\ninputs = [\"a\"]\n", 9, "disparity must be"),
-        ("[[node]]\nname = \"m\"\nop = \"defocus\"\nfocus = 1\nscale = 1e30\nmax_radius = 4\ninputs = [\"a\"]\n", 9, "scale must be"),
-        ("[[node]]\nname = \"m\"\nop = \"key\"\ngain = -1\ninputs = [\"a\"]\n", 9, "gain must be"),
-        ("[[node]]\nname = \"m\"\nop = \"dilate\"\nradius = 2000\ninputs = [\"a\"]\n", 9, "radius must be a number from 0 to 1024"),
+        // A key of another operation, a near miss, a missing parameter.
+        ("[[node]]\nname = \"m\"\nop = \"over\"\nradius = 3\ninputs = [\"a\", \"b\"]\n", 12, "unknown field `radius` for node 'm'"),
+        ("[[node]]\nname = \"m\"\nop = \"blur\"\nradios = 3\ninputs = [\"a\"]\n", 12, "did you mean `radius`?"),
+        ("[[node]]\nname = \"m\"\nop = \"blur\"\ninputs = [\"a\"]\n", 9, "op 'blur' needs radius"),
+        ("[[node]]\nname = \"m\"\nop = \"key\"\nclip_black = 0.5\nclip_white = 0.25\ninputs = [\"a\"]\n", 9, "clip_white must be above clip_black"),
+        ("[[node]]\nname = \"m\"\nop = \"blur\"\nfilter = \"tent\"\nradius = 1\ninputs = [\"a\"]\n", 12, "unknown filter 'tent'"),
+        // The command line's bounds hold in job files too, at the key's line.
+        ("[[node]]\nname = \"m\"\nop = \"blur\"\nradius = 1000000\ninputs = [\"a\"]\n", 12, "radius must be a number from 0 to 4096"),
+        ("[[node]]\nname = \"m\"\nop = \"over\"\nmix = nan\ninputs = [\"a\", \"b\"]\n", 12, "mix must be a number from 0 to 1, not NaN"),
+        ("[[node]]\nname = \"m\"\nop = \"vblur\"\nscale = inf\nmax_displacement = 4\ninputs = [\"a\"]\n", 12, "scale must be"),
+        ("[[node]]\nname = \"m\"\nop = \"vblur\"\nmax_displacement = 4000000000\ninputs = [\"a\"]\n", 12, "max_displacement must be"),
+        ("[[node]]\nname = \"m\"\nop = \"stereo\"\neye = \"left\"\ndisparity = 1e30\ninputs = [\"a\"]\n", 13, "disparity must be"),
+        ("[[node]]\nname = \"m\"\nop = \"defocus\"\nfocus = 1\nscale = 1e30\nmax_radius = 4\ninputs = [\"a\"]\n", 13, "scale must be"),
+        ("[[node]]\nname = \"m\"\nop = \"key\"\ngain = -1\ninputs = [\"a\"]\n", 12, "gain must be"),
+        ("[[node]]\nname = \"m\"\nop = \"dilate\"\nradius = 2000\ninputs = [\"a\"]\n", 12, "radius must be a number from 0 to 1024"),
     ];
     for (body, line, words) in cases {
         let (code, message) = run_job(d, &format!("{READS}\n{body}{write}"));

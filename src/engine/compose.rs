@@ -88,12 +88,13 @@ impl<'g> Composer<'g> {
         let mut strips: Vec<Option<Rows>> = strips.into_iter().map(Some).collect();
         self.fed = rows.end;
         for n in 0..self.graph.nodes.len() {
-            match &self.graph.nodes[n] {
+            let graph_node = &self.graph.nodes[n];
+            match graph_node {
                 Node::Input(i) => {
                     let strip = strips[*i].take().expect("one strip per input");
                     self.windows[n].append(strip);
                 }
-                Node::Op { op, inputs } => {
+                Node::Op { op, inputs, .. } => {
                     let halo = op.halo() as i32;
                     // A source (no inputs) produces as far as the inputs were fed.
                     let ready = inputs
@@ -117,7 +118,8 @@ impl<'g> Composer<'g> {
                         let band = band_rows((end - start) as usize, node.width);
                         node.bands(start, band)
                             .into_par_iter()
-                            .try_for_each(|mut out| op.compute(frame, &args, &mut out))?;
+                            .try_for_each(|mut out| op.compute(frame, &args, &mut out))
+                            .map_err(|m| graph_node.locate(m))?;
                     }
                     // Inputs read by no later node are trimmed now, not after
                     // the last node: a long chain holds a few strips, not one
@@ -250,6 +252,7 @@ mod tests {
             nodes.push(Node::Op {
                 op: Box::new(VerticalSum::new(halo, top, bottom)),
                 inputs: vec![i],
+                origin: None,
             });
         }
         let graph = Graph { nodes };
@@ -306,6 +309,7 @@ mod tests {
                 Node::Op {
                     op: Box::new(VerticalSum::new(5, top, bottom)),
                     inputs: vec![0],
+                    origin: None,
                 },
             ],
         };
@@ -338,6 +342,7 @@ mod tests {
                 Node::Op {
                     op: Box::new(op),
                     inputs: vec![0],
+                    origin: None,
                 },
             ],
         };

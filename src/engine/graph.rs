@@ -3,6 +3,7 @@
 use super::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
+use std::sync::Arc;
 
 /// An operation over strips of rows. Implementations are pure: the output rows
 /// depend only on the input rows they are given.
@@ -63,8 +64,83 @@ pub trait Op: Send + Sync {
 pub enum Node {
     /// The n-th input sequence of the job.
     Input(usize),
-    /// An operation on earlier nodes.
-    Op { op: Box<dyn Op>, inputs: Vec<usize> },
+    /// An operation on earlier nodes; `origin` says where it came from (a
+    /// job file's line and node) for its errors.
+    Op {
+        op: Box<dyn Op>,
+        inputs: Vec<usize>,
+        origin: Option<Arc<str>>,
+    },
+}
+
+impl Node {
+    /// `message` (from the node's `check` or `compute`) prefixed with where
+    /// the node came from.
+    pub fn locate(&self, message: String) -> String {
+        match self {
+            Node::Op {
+                origin: Some(at), ..
+            } => format!("{at}: {message}"),
+            _ => message,
+        }
+    }
+}
+
+/// A node of a graph being built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NodeId(usize);
+
+impl NodeId {
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
+/// Builds a graph in order, each node after the nodes it reads; the last
+/// node added is the output.
+#[derive(Default)]
+pub struct GraphBuilder {
+    nodes: Vec<Node>,
+    /// Given to the operations added from now on.
+    origin: Option<Arc<str>>,
+}
+
+impl GraphBuilder {
+    /// A builder whose first nodes are inputs `0..count`.
+    pub fn with_inputs(count: usize) -> (Self, Vec<NodeId>) {
+        let mut builder = GraphBuilder::default();
+        let inputs = (0..count).map(|i| builder.input(i)).collect();
+        (builder, inputs)
+    }
+
+    pub fn input(&mut self, index: usize) -> NodeId {
+        self.nodes.push(Node::Input(index));
+        NodeId(self.nodes.len() - 1)
+    }
+
+    pub fn add(&mut self, op: impl Op + 'static, inputs: &[NodeId]) -> NodeId {
+        self.add_boxed(Box::new(op), inputs)
+    }
+
+    pub fn add_boxed(&mut self, op: Box<dyn Op>, inputs: &[NodeId]) -> NodeId {
+        self.nodes.push(Node::Op {
+            op,
+            inputs: inputs.iter().map(|n| n.0).collect(),
+            origin: self.origin.clone(),
+        });
+        NodeId(self.nodes.len() - 1)
+    }
+
+    /// Where the operations added from now on came from.
+    pub fn locate(&mut self, origin: Option<String>) {
+        self.origin = origin.map(Arc::from);
+    }
+
+    /// The graph whose output is the last node added.
+    pub fn finish(self) -> Graph {
+        assert!(!self.nodes.is_empty(), "a graph has nodes");
+        Graph { nodes: self.nodes }
+    }
 }
 
 /// Nodes in topological order: a node refers only to nodes before it. The last
@@ -74,12 +150,9 @@ pub struct Graph {
 }
 
 impl Graph {
-    /// `inputs` input nodes (0..inputs), then `ops` in order, each with the
-    /// nodes it reads; the last one is written (the last input without ops).
-    pub fn chain(inputs: usize, ops: Vec<(Box<dyn Op>, Vec<usize>)>) -> Self {
-        let mut nodes: Vec<Node> = (0..inputs).map(Node::Input).collect();
-        nodes.extend(ops.into_iter().map(|(op, inputs)| Node::Op { op, inputs }));
-        Graph { nodes }
+    /// The graph of one input, as it is.
+    pub fn identity() -> Self {
+        GraphBuilder::with_inputs(1).0.finish()
     }
 
     pub fn output(&self) -> usize {
@@ -122,7 +195,7 @@ impl Graph {
         for node in &self.nodes {
             let value = match node {
                 Node::Input(i) => input(*i),
-                Node::Op { op, inputs } => {
+                Node::Op { op, inputs, .. } => {
                     let args: Vec<T> = inputs.iter().map(|&n| values[n].clone()).collect();
                     combine(op.as_ref(), &args)
                 }
@@ -176,15 +249,20 @@ mod tests {
     #[test]
     fn the_peak_counts_only_the_nodes_alive_at_once() {
         // A chain holds a node and its input; a merge of three, all four.
-        let chain = Graph::chain(1, (0..100).map(|n| (op(), vec![n])).collect());
-        assert_eq!(chain.peak(|_| 1), 2);
-        let merge = Graph::chain(3, vec![(op(), vec![0, 1, 2])]);
-        assert_eq!(merge.peak(|_| 1), 4);
+        let (mut chain, inputs) = GraphBuilder::with_inputs(1);
+        let mut last = inputs[0];
+        for _ in 0..100 {
+            last = chain.add_boxed(op(), &[last]);
+        }
+        assert_eq!(chain.finish().peak(|_| 1), 2);
+        let (mut merge, inputs) = GraphBuilder::with_inputs(3);
+        merge.add_boxed(op(), &inputs);
+        assert_eq!(merge.finish().peak(|_| 1), 4);
         // An input read again further down stays alive until then.
-        let reuse = Graph::chain(
-            1,
-            vec![(op(), vec![0]), (op(), vec![1]), (op(), vec![2, 0])],
-        );
-        assert_eq!(reuse.peak(|n| 10 + n), 10 + 12 + 13);
+        let (mut reuse, inputs) = GraphBuilder::with_inputs(1);
+        let first = reuse.add_boxed(op(), &[inputs[0]]);
+        let second = reuse.add_boxed(op(), &[first]);
+        reuse.add_boxed(op(), &[second, inputs[0]]);
+        assert_eq!(reuse.finish().peak(|n| 10 + n), 10 + 12 + 13);
     }
 }

@@ -472,13 +472,14 @@ pub fn colour_inputs(graph: Graph, luminance: &[Option<[f32; 3]>]) -> Graph {
                     nodes.push(Node::Op {
                         op: Box::new(FromLuminance { weights }),
                         inputs: vec![nodes.len() - 1],
+                        origin: None,
                     });
                 }
                 moved.push(nodes.len() - 1);
             }
-            Node::Op { op, inputs } => {
+            Node::Op { op, inputs, origin } => {
                 let inputs = inputs.iter().map(|&n| moved[n]).collect();
-                nodes.push(Node::Op { op, inputs });
+                nodes.push(Node::Op { op, inputs, origin });
                 moved.push(nodes.len() - 1);
             }
         }

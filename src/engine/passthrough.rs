@@ -46,7 +46,7 @@ impl PassThrough {
         let source = loop {
             match &graph.nodes[node] {
                 Node::Input(i) if !tests.is_empty() => break *i,
-                Node::Op { op, inputs } if op.passes_second() && inputs.len() == 2 => {
+                Node::Op { op, inputs, .. } if op.passes_second() && inputs.len() == 2 => {
                     let Node::Input(first) = graph.nodes[inputs[0]] else {
                         return None;
                     };

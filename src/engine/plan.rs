@@ -295,10 +295,13 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         },
     );
     for node in &graph.nodes {
-        if let Node::Op { op, inputs: args } = node {
+        if let Node::Op {
+            op, inputs: args, ..
+        } = node
+        {
             let lists: Vec<&[ChannelDescription]> =
                 args.iter().map(|&n| channels[n].as_slice()).collect();
-            op.check(&lists).map_err(located)?;
+            op.check(&lists).map_err(|m| located(node.locate(m)))?;
         }
     }
     // Subsampled channels are carried, or turned into RGB first

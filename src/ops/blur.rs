@@ -3,16 +3,64 @@
 //! is filtered horizontally once however the strips fall. Edges clamp to the
 //! data window. Formulas: specs/ops.md, "blur".
 
+use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::Selection;
-use crate::engine::graph::Op;
+use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
+use crate::params::BLUR_RADIUS;
 use exr::meta::attribute::{ChannelDescription, SampleType};
 use std::sync::Arc;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub const BLUR: Operation = Operation {
+    name: "blur",
+    about: "Blur with a separable Gaussian or box of radius R (edges clamp to the data \
+            window); `--radius R` is oiiotool's `--blur (2R+1)x(2R+1)`",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build,
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// Radius in pixels: 2R + 1 taps.
+        radius: u32 [BLUR_RADIUS],
+        /// gaussian or box.
+        filter: Filter = "gaussian",
+    }
+}
+
+fn build(args: &Args, graph: &mut GraphBuilder, inputs: &[NodeId]) -> Result<NodeId, String> {
+    let p = Params::read(args)?;
+    Ok(passes(
+        p.filter,
+        p.radius as usize,
+        &args.layers,
+        inputs[0],
+        graph,
+    ))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Filter {
     Gaussian,
     Box,
+}
+
+impl Value for Filter {
+    fn parse(text: &str) -> Result<Self, String> {
+        choice(
+            text,
+            Self::CHOICES,
+            &[Filter::Gaussian, Filter::Box],
+            "filter",
+        )
+    }
+    const CHOICES: &'static [&'static str] = &["gaussian", "box"];
 }
 
 /// The 2R + 1 weights, taps -R..=R: the Gaussian that oiiotool's
@@ -175,30 +223,23 @@ impl Op for Vertical {
     }
 }
 
-/// A blur of graph node `input` as its two passes, to append to a graph
-/// whose next node is `next`: the last one is the result.
+/// A blur of graph node `input` as its two passes; returns the second.
 pub fn passes(
     filter: Filter,
     radius: usize,
     layers: &Selection,
-    input: usize,
-    next: usize,
-) -> Vec<(Box<dyn Op>, Vec<usize>)> {
+    input: NodeId,
+    graph: &mut GraphBuilder,
+) -> NodeId {
     let weights = Arc::new(weights(filter, radius));
-    vec![
-        (
-            Box::new(Horizontal {
-                weights: weights.clone(),
-                layers: layers.clone(),
-            }) as Box<dyn Op>,
-            vec![input],
-        ),
-        (
-            Box::new(Vertical {
-                weights,
-                layers: layers.clone(),
-            }),
-            vec![next, input],
-        ),
-    ]
+    let horizontal = Horizontal {
+        weights: weights.clone(),
+        layers: layers.clone(),
+    };
+    let first = graph.add(horizontal, &[input]);
+    let vertical = Vertical {
+        weights,
+        layers: layers.clone(),
+    };
+    graph.add(vertical, &[first, input])
 }

@@ -3,11 +3,54 @@
 //! I6 = P - G I5 (the plate darkened by it), in R, G, B only.
 //! specs/ops.md, "diffrender".
 
+use super::declare::{named, params, Operation};
 use super::layers::Selection;
 use super::merge::{Merge, MergeOp};
-use crate::engine::graph::Op;
+use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::SHADOW_GAIN;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+
+pub const DIFFRENDER: Operation = Operation {
+    name: "diffrender",
+    about: "Differential rendering (Debevec): an object rendered into a plate with the \
+            shadows and light it casts on a proxy of the real scene",
+    inputs: &[
+        named("object", "I1: the object alone"),
+        named("proxy", "I2: the proxy of the scene, without the object"),
+        named(
+            "with_shadows",
+            "I3: the proxy with the object's shadows (and light) on it",
+        ),
+        named(
+            "plate",
+            "P: the real plate; its header and other channels are kept",
+        ),
+    ],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: false,
+    straight: false,
+    header: Some(3),
+    build: |args, graph, inputs| {
+        let p = Params::read(args)?;
+        let [object, proxy, shadowed, plate] = inputs else {
+            unreachable!("four inputs, as declared")
+        };
+        let steps = [*object, *proxy, *shadowed, *plate];
+        Ok(push_steps(graph, steps, p.shadow_gain, p.shadow_only))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// G in P - G (I4 - I3).
+        shadow_gain: f32 [SHADOW_GAIN] = "1",
+        /// Write I5 = (I1 over I2) - I3 instead, for grading.
+        shadow_only: bool,
+    }
+}
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
 
@@ -81,33 +124,26 @@ impl Op for Shadow {
     }
 }
 
-/// Appends to `ops` (whose first op is graph node `base`) the whole method
-/// on graph nodes `[object I1, proxy I2, with shadows I3, plate P]`:
-/// I4 = I1 over I2, I5, then (unless `shadow_only`) I6 and I1 over I6. The
-/// last op pushed is the result.
-pub fn push_steps(
-    ops: &mut Vec<(Box<dyn Op>, Vec<usize>)>,
-    base: usize,
-    [object, proxy, shadowed, plate]: [usize; 4],
+/// The whole method on nodes `[object I1, proxy I2, with shadows I3, plate
+/// P]`: I4 = I1 over I2, I5, then (unless `shadow_only`) I6 and I1 over I6.
+/// Returns the last node.
+fn push_steps(
+    graph: &mut GraphBuilder,
+    [object, proxy, shadowed, plate]: [NodeId; 4],
     gain: f32,
     shadow_only: bool,
-) {
-    let over = || -> Box<dyn Op> {
-        Box::new(Merge {
-            op: MergeOp::Over,
-            straight: false,
-            mix: 1.0,
-            layers: Selection::default(),
-        })
+) -> NodeId {
+    let over = || Merge {
+        op: MergeOp::Over,
+        straight: false,
+        mix: 1.0,
+        layers: Selection::default(),
     };
-    let mut push = |op: Box<dyn Op>, inputs: Vec<usize>| {
-        ops.push((op, inputs));
-        base + ops.len() - 1
-    };
-    let i4 = push(over(), vec![object, proxy]);
-    let i5 = push(Box::new(Shadow(Step::Light)), vec![i4, shadowed]);
-    if !shadow_only {
-        let i6 = push(Box::new(Shadow(Step::Apply { gain })), vec![i5, plate]);
-        push(over(), vec![object, i6]);
+    let i4 = graph.add(over(), &[object, proxy]);
+    let i5 = graph.add(Shadow(Step::Light), &[i4, shadowed]);
+    if shadow_only {
+        return i5;
     }
+    let i6 = graph.add(Shadow(Step::Apply { gain }), &[i5, plate]);
+    graph.add(over(), &[object, i6])
 }

@@ -3,9 +3,136 @@
 //! backgrounds. Pointwise; each writes premultiplied R, G, B, A.
 //! Formulas: specs/ops.md, "Matting".
 
+use super::declare::{input, named, params, Operation, Value};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::{BALANCE, CLIP, GAIN, SCREEN, SOFTNESS, THRESHOLD};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
+
+pub const KEY: Operation = Operation {
+    name: "key",
+    about: "Colour-difference keyer: alpha from how far the screen channel rises above the \
+            other two, the screen taken out of the colour",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: KeyParams::PARAMS,
+    layers: false,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = KeyParams::read(args)?;
+        if p.clip_white <= p.clip_black {
+            return Err("clip_white must be above clip_black".into());
+        }
+        let key = Key {
+            screen: p.screen.0,
+            gain: p.gain,
+            balance: p.balance,
+            clip: (p.clip_black, p.clip_white),
+            despill: p.despill,
+            invert: p.invert,
+        };
+        Ok(graph.add(Matte(Pull::Key(key)), inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct KeyParams {
+        /// green, blue, or the screen's colour as R,G,B.
+        screen: Screen = "green",
+        /// Scales the difference: above 1 more transparent.
+        gain: f32 [GAIN] = "1",
+        /// Weight of the first other channel against the second (0..1).
+        balance: f32 [BALANCE] = "0.5",
+        /// Alpha at or below this becomes 0.
+        clip_black: f32 [CLIP] = "0",
+        /// Alpha at or above this becomes 1.
+        clip_white: f32 [CLIP] = "1",
+        /// Limit the screen channel to the other two (spill suppression).
+        despill: bool,
+        /// 1 - alpha.
+        invert: bool,
+    }
+}
+
+pub const DIFFMATTE: Operation = Operation {
+    name: "diffmatte",
+    about: "Difference matte: alpha from the difference with a clean plate",
+    inputs: &[
+        input("input", "Input file or sequence, `:PART` for a part"),
+        named("clean_plate", "The background alone"),
+    ],
+    repeats: false,
+    params: DiffParams::PARAMS,
+    layers: false,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = DiffParams::read(args)?;
+        let matte = DiffMatte {
+            threshold: p.threshold,
+            softness: p.softness,
+            invert: p.invert,
+        };
+        Ok(graph.add(Matte(Pull::Difference(matte)), inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct DiffParams {
+        /// Differences up to this are background (alpha 0).
+        threshold: f32 [THRESHOLD] = "0.05",
+        /// Alpha reaches 1 at threshold + softness.
+        softness: f32 [SOFTNESS] = "0.1",
+        /// 1 - alpha.
+        invert: bool,
+    }
+}
+
+pub const TRIANGULATE: Operation = Operation {
+    name: "triangulate",
+    about: "Triangulation matting: one foreground over two known backgrounds gives alpha \
+            and colour exactly",
+    inputs: &[
+        named("over_a", "The foreground over background A"),
+        named("bg_a", "Background A alone"),
+        named("over_b", "The foreground over background B"),
+        named("bg_b", "Background B alone"),
+    ],
+    repeats: false,
+    params: &[],
+    layers: false,
+    straight: false,
+    header: Some(0),
+    build: |_, graph, inputs| Ok(graph.add(Matte(Pull::Triangulation), inputs)),
+    measure: None,
+};
+
+/// A screen colour: `green`, `blue` or R,G,B with one channel above the
+/// others.
+pub struct Screen(pub [f32; 3]);
+
+impl Value for Screen {
+    fn parse(text: &str) -> Result<Self, String> {
+        match text.to_ascii_lowercase().as_str() {
+            "green" => return Ok(Screen([0.0, 1.0, 0.0])),
+            "blue" => return Ok(Screen([0.0, 0.0, 1.0])),
+            _ => {}
+        }
+        let values: Vec<f32> = text
+            .split(',')
+            .map(|v| SCREEN.parse::<f32>(v))
+            .collect::<Result<_, _>>()
+            .map_err(|m| format!("expected green, blue or R,G,B: {m}"))?;
+        match values[..] {
+            [r, g, b] if r.max(g).max(b) > r.min(g).min(b) => Ok(Screen([r, g, b])),
+            [_, _, _] => Err("a screen colour needs one channel above the others".into()),
+            _ => Err("expected green, blue or R,G,B".into()),
+        }
+    }
+}
 
 const RGB: [&str; 3] = ["R", "G", "B"];
 

@@ -1,9 +1,11 @@
 //! Two-input merges, A (top) with B (bottom): the Porter-Duff operators and
 //! the arithmetic ones, as in Nuke's Merge. Formulas: specs/ops.md, "merge".
 
+use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::{Layer, Selection};
-use crate::engine::graph::{intersection, union, Op};
+use crate::engine::graph::{intersection, union, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Extent, Rows, RowsMut};
+use crate::params::MIX;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
 
@@ -24,7 +26,103 @@ macro_rules! by_operator {
     };
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub const OVER: Operation = Operation {
+    name: "over",
+    about: "Composite FG over BG: C = Cfg + (1 - Afg) Cbg (premultiplied)",
+    inputs: &[
+        input(
+            "fg",
+            "Foreground: a file or a sequence (fg.####.exr, fg.%04d.exr), with `:PART` \
+             (name or index) to read one part of a multi-part file",
+        ),
+        input(
+            "bg",
+            "Background: its header, display window and other channels are kept",
+        ),
+    ],
+    repeats: false,
+    params: OverParams::PARAMS,
+    layers: true,
+    straight: true,
+    header: Some(1),
+    build: |args, graph, inputs| {
+        let mix = OverParams::read(args)?.mix;
+        Ok(graph.add(merge(args, MergeOp::Over, mix), inputs))
+    },
+    measure: None,
+};
+
+pub const MERGE: Operation = Operation {
+    name: "merge",
+    about: "Merge A (top) with B (bottom) by an operator, as Nuke's Merge does",
+    inputs: &[
+        input("a", "Top input: a file or sequence, `:PART` for a part"),
+        input(
+            "b",
+            "Bottom input: its header, display window and other channels are kept",
+        ),
+    ],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: true,
+    straight: true,
+    header: Some(1),
+    build: |args, graph, inputs| {
+        let p = Params::read(args)?;
+        Ok(graph.add(merge(args, p.operator, p.mix), inputs))
+    },
+    measure: None,
+};
+
+pub const STACK: Operation = Operation {
+    name: "stack",
+    about: "Composite layers L1 over L2 over ... Ln in one pass (L1 on top)",
+    inputs: &[input(
+        "inputs",
+        "Two or more inputs, top first; the last one's header is kept",
+    )],
+    repeats: true,
+    params: &[],
+    layers: true,
+    straight: true,
+    header: None,
+    build: |args, graph, inputs| {
+        Ok(push_stack(graph, inputs, || {
+            merge(args, MergeOp::Over, 1.0)
+        }))
+    },
+    measure: None,
+};
+
+params! {
+    /// Merge's with the operator fixed.
+    pub struct OverParams {
+        /// Blend the result with B: 0 gives B, 1 the result.
+        mix: f32 [MIX] = "1",
+    }
+}
+
+params! {
+    pub struct Params {
+        /// The operator (specs/ops.md): over, under, in, out, atop, xor, plus,
+        /// minus, from, multiply, screen, max, min, difference, divide, mask,
+        /// stencil, copy.
+        operator: MergeOp,
+        /// Blend the result with B: 0 gives B, 1 the result.
+        mix: f32 [MIX] = "1",
+    }
+}
+
+fn merge(args: &Args, op: MergeOp, mix: f32) -> Merge {
+    Merge {
+        op,
+        straight: args.straight,
+        mix,
+        layers: args.layers.clone(),
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MergeOp {
     Over,
     Under,
@@ -44,6 +142,37 @@ pub enum MergeOp {
     Mask,
     Stencil,
     Copy,
+}
+
+impl Value for MergeOp {
+    fn parse(text: &str) -> Result<Self, String> {
+        use MergeOp::*;
+        let all = [
+            Over, Under, In, Out, Atop, Xor, Plus, Minus, From, Multiply, Screen, Max, Min,
+            Difference, Divide, Mask, Stencil, Copy,
+        ];
+        choice(text, Self::CHOICES, &all, "operator")
+    }
+    const CHOICES: &'static [&'static str] = &[
+        "over",
+        "under",
+        "in",
+        "out",
+        "atop",
+        "xor",
+        "plus",
+        "minus",
+        "from",
+        "multiply",
+        "screen",
+        "max",
+        "min",
+        "difference",
+        "divide",
+        "mask",
+        "stencil",
+        "copy",
+    ];
 }
 
 /// Which inputs' data windows bound the result (where it can be nonzero).
@@ -133,21 +262,14 @@ impl MergeOp {
     }
 }
 
-/// Appends to `ops` (whose first op is graph node `base`) a stack of graph
-/// nodes `layers` (top first) composited with `over()`, bottom up: the last
-/// op pushed is the result.
-pub fn push_stack(
-    ops: &mut Vec<(Box<dyn Op>, Vec<usize>)>,
-    base: usize,
-    layers: &[usize],
-    over: impl Fn() -> Box<dyn Op>,
-) {
+/// Nodes `layers` (top first) composited with `over()`, bottom up: returns
+/// the last merge.
+fn push_stack(graph: &mut GraphBuilder, layers: &[NodeId], over: impl Fn() -> Merge) -> NodeId {
     let (bottom, above) = layers.split_last().expect("a stack has layers");
-    let mut below = *bottom;
-    for &layer in above.iter().rev() {
-        ops.push((over(), vec![layer, below]));
-        below = base + ops.len() - 1;
-    }
+    above
+        .iter()
+        .rev()
+        .fold(*bottom, |below, &layer| graph.add(over(), &[layer, below]))
 }
 
 pub struct Merge {

@@ -1,6 +1,8 @@
-//! Compositing operations, one family per file, as pure functions over strips.
+//! Compositing operations, one family per file, as pure functions over
+//! strips, each declared once (`declare::Operation`) and listed in `ALL`.
 
 pub mod blur;
+pub mod declare;
 pub mod defocus;
 pub mod diffrender;
 pub mod layers;
@@ -11,3 +13,30 @@ pub mod premult;
 pub mod stereo;
 pub mod vblur;
 pub mod zmerge;
+
+use declare::Operation;
+
+/// Every operation, as the command line lists them: adding an operation is
+/// its file and one line here.
+pub const ALL: &[&Operation] = &[
+    &merge::OVER,
+    &merge::MERGE,
+    &merge::STACK,
+    &premult::PREMULT,
+    &premult::UNPREMULT,
+    &blur::BLUR,
+    &defocus::DEFOCUS,
+    &vblur::VBLUR,
+    &stereo::STEREO,
+    &zmerge::ZMERGE,
+    &diffrender::DIFFRENDER,
+    &matte::KEY,
+    &matte::DIFFMATTE,
+    &matte::TRIANGULATE,
+    &morphology::ERODE,
+    &morphology::DILATE,
+];
+
+pub fn find(name: &str) -> Option<&'static Operation> {
+    ALL.iter().copied().find(|op| op.name == name)
+}

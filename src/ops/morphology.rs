@@ -2,10 +2,57 @@
 //! radius R (halo R rows), for shrinking or growing a pulled matte; colour
 //! is left alone. specs/ops.md, "Matting".
 
+use super::declare::{input, params, Args, Operation};
 use super::layers::Selection;
-use crate::engine::graph::Op;
+use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::MORPH_RADIUS;
 use exr::meta::attribute::ChannelDescription;
+
+pub const ERODE: Operation = Operation {
+    name: "erode",
+    about: "Shrink a matte: the smallest alpha within a disc of the radius",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| build(args, graph, inputs, false),
+    measure: None,
+};
+
+pub const DILATE: Operation = Operation {
+    name: "dilate",
+    about: "Grow a matte: the largest alpha within a disc of the radius",
+    build: |args, graph, inputs| build(args, graph, inputs, true),
+    ..ERODE
+};
+
+params! {
+    pub struct Params {
+        /// Radius of the disc in pixels.
+        radius: u32 [MORPH_RADIUS],
+        /// 1 - alpha afterwards.
+        invert: bool,
+    }
+}
+
+fn build(
+    args: &Args,
+    graph: &mut GraphBuilder,
+    inputs: &[NodeId],
+    dilate: bool,
+) -> Result<NodeId, String> {
+    let p = Params::read(args)?;
+    let op = Morphology {
+        radius: p.radius as usize,
+        dilate,
+        invert: p.invert,
+        layers: args.layers.clone(),
+    };
+    Ok(graph.add(op, inputs))
+}
 
 pub struct Morphology {
     pub radius: usize,

@@ -1,9 +1,42 @@
 //! `premult` and `unpremult`: colour times or divided by its layer's alpha.
 
+use super::declare::{input, Operation};
 use super::layers::Selection;
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
+
+pub const PREMULT: Operation = Operation {
+    name: "premult",
+    about: "Multiply colour by alpha",
+    build: |args, graph, inputs| {
+        let op = Premult {
+            inverse: false,
+            layers: args.layers.clone(),
+        };
+        Ok(graph.add(op, inputs))
+    },
+    ..UNPREMULT
+};
+
+pub const UNPREMULT: Operation = Operation {
+    name: "unpremult",
+    about: "Divide colour by alpha (colour unchanged where alpha is 0)",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: &[],
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let op = Premult {
+            inverse: true,
+            layers: args.layers.clone(),
+        };
+        Ok(graph.add(op, inputs))
+    },
+    measure: None,
+};
 
 pub struct Premult {
     /// Divide instead of multiply (`unpremult`).

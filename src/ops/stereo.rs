@@ -3,14 +3,55 @@
 //! pixel beside them that is farther away (what the moved object uncovered).
 //! Row by row: no halo. specs/ops.md, "stereo".
 
+use super::declare::{choice, input, params, Operation, Value};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::DISPARITY;
 use exr::meta::attribute::ChannelDescription;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub const STEREO: Operation = Operation {
+    name: "stereo",
+    about: "The other eye of a stereo pair from one view and its depth",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: false,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = Params::read(args)?;
+        let op = Stereo {
+            eye: p.eye,
+            disparity: p.disparity,
+            z_channel: p.z_channel,
+        };
+        Ok(graph.add(op, inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// The eye to make: pixels move right for the left eye, left for the right.
+        eye: Eye,
+        /// Shift in pixels at depth 1: a pixel at depth Z moves K / Z.
+        disparity: f32 [DISPARITY],
+        /// The depth channel.
+        z_channel: String = "Z",
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Eye {
     Left,
     Right,
+}
+
+impl Value for Eye {
+    fn parse(text: &str) -> Result<Self, String> {
+        choice(text, Self::CHOICES, &[Eye::Left, Eye::Right], "eye")
+    }
+    const CHOICES: &'static [&'static str] = &["left", "right"];
 }
 
 pub struct Stereo {

@@ -3,10 +3,85 @@
 //! largest vertical displacement; a longer one is an error, never a cut
 //! streak. Formulas: specs/ops.md, "vblur".
 
+use super::declare::{input, params, Args, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::Op;
+use crate::engine::plan::Job;
+use crate::engine::prepass::max_over_rows;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::{MAX_DISPLACEMENT, VBLUR_SCALE};
 use exr::meta::attribute::ChannelDescription;
+
+pub const VBLUR: Operation = Operation {
+    name: "vblur",
+    about: "Motion blur from per-pixel displacement (pixels moved during the frame)",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = Params::read(args)?;
+        let reach = match (p.max_displacement, args.job_file) {
+            (Some(reach), _) => reach as usize,
+            // A job's input can be any node: no first pass, the reach is given.
+            (None, true) => return Err("op 'vblur' needs max_displacement in a job file".into()),
+            // Not measured: a dry run, which reads no pixels.
+            (None, false) => 0,
+        };
+        Ok(graph.add(p.blur(reach, &args.layers), inputs))
+    },
+    measure: Some(measure),
+};
+
+params! {
+    pub struct Params {
+        /// Scales the displacement: 0 for none, 1 as rendered.
+        scale: f32 [VBLUR_SCALE] = "1",
+        /// The x and y displacement channels (y down, in pixels).
+        vectors: Vectors = "forward.u,forward.v",
+        /// Rows a streak may reach; without it, a first pass over the vectors
+        /// measures it. A longer streak is an error, never cut.
+        max_displacement: Option<u32> [MAX_DISPLACEMENT],
+    }
+}
+
+impl Params {
+    fn blur(&self, reach: usize, layers: &Selection) -> VectorBlur {
+        VectorBlur {
+            scale: self.scale,
+            vectors: self.vectors.0.clone(),
+            reach,
+            layers: layers.clone(),
+        }
+    }
+}
+
+/// The longest streak of the input, where `max_displacement` is not given.
+fn measure(args: &Args, job: &Job) -> crate::error::Result<Vec<(&'static str, String)>> {
+    let p = Params::read(args).map_err(crate::error::Error::usage)?;
+    if p.max_displacement.is_some() {
+        return Ok(Vec::new());
+    }
+    let names = [p.vectors.0[0].as_str(), p.vectors.0[1].as_str()];
+    let reach = max_over_rows(job, 0, names, |u, v| rows_reached(p.scale, u, v))?;
+    Ok(vec![("max_displacement", reach.to_string())])
+}
+
+/// Two channel names: `X,Y` (a job file's `["X", "Y"]` too).
+pub struct Vectors(pub [String; 2]);
+
+impl Value for Vectors {
+    fn parse(text: &str) -> Result<Self, String> {
+        match text.split(',').map(str::trim).collect::<Vec<_>>()[..] {
+            [x, y] if !x.is_empty() && !y.is_empty() => Ok(Vectors([x.into(), y.into()])),
+            _ => Err(format!(
+                "vectors are two channel names, X,Y (or [\"X\", \"Y\"]), not '{text}'"
+            )),
+        }
+    }
+}
 
 pub struct VectorBlur {
     /// Multiplies the displacement: 0 none, 1 as rendered.
@@ -18,15 +93,14 @@ pub struct VectorBlur {
     pub layers: Selection,
 }
 
-impl VectorBlur {
-    /// The most rows any pixel of a displacement row `(du, dv)` streaks.
-    pub fn rows_reached(&self, du: &[f32], dv: &[f32]) -> usize {
-        du.iter()
-            .zip(dv)
-            .map(|(&x, &y)| Streak::new(self.scale * x, self.scale * y).rows())
-            .max()
-            .unwrap_or(0)
-    }
+/// The most rows any pixel of a displacement row `(du, dv)` streaks,
+/// scaled by `scale`.
+pub fn rows_reached(scale: f32, du: &[f32], dv: &[f32]) -> usize {
+    du.iter()
+        .zip(dv)
+        .map(|(&x, &y)| Streak::new(scale * x, scale * y).rows())
+        .max()
+        .unwrap_or(0)
 }
 
 /// The pixels a pixel moved by (dx, dy) spreads over: n = max(1,

@@ -2,9 +2,37 @@
 //! order (nearest first; transparent ones never in front) and composited
 //! front to back with `over`. specs/ops.md, "zmerge".
 
+use super::declare::{input, params, Operation};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
+
+pub const ZMERGE: Operation = Operation {
+    name: "zmerge",
+    about: "Depth-aware merge: per pixel the nearer sample goes over the farther (alpha 0 \
+            never in front); Z becomes the nearer depth",
+    inputs: &[input(
+        "inputs",
+        "Two or more inputs; the last one's header and other channels are kept",
+    )],
+    repeats: true,
+    params: Params::PARAMS,
+    layers: false,
+    straight: false,
+    header: None,
+    build: |args, graph, inputs| {
+        let z_channel = Params::read(args)?.z_channel;
+        Ok(graph.add(ZMerge { z_channel }, inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// The depth channel.
+        z_channel: String = "Z",
+    }
+}
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
 

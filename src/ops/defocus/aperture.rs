@@ -10,9 +10,9 @@ pub enum Aperture {
     Polygon(u32),
 }
 
-impl Aperture {
+impl crate::ops::declare::Value for Aperture {
     /// `disc`, `hexagon`, or `N-gon` / `Ngon` (N from 3 to 64).
-    pub fn parse(text: &str) -> Result<Self, String> {
+    fn parse(text: &str) -> Result<Self, String> {
         let sides = match text.to_ascii_lowercase().as_str() {
             "disc" | "disk" => return Ok(Aperture::Disc),
             "hexagon" => 6,
@@ -28,7 +28,9 @@ impl Aperture {
             Err(format!("an N-gon aperture has 3 to 64 sides, not {sides}"))
         }
     }
+}
 
+impl Aperture {
     /// Area of the aperture of radius `r`, at least one pixel.
     pub(super) fn area(self, r: f32) -> f32 {
         let area = match self {

@@ -9,12 +9,55 @@ mod tests;
 
 pub use aperture::Aperture;
 
+use super::declare::{input, params, Operation};
 use super::layers::Selection;
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::params::{DEFOCUS_SCALE, FOCUS, MAX_RADIUS};
 use aperture::Footprints;
 use exr::meta::attribute::ChannelDescription;
 use sums::{sums, Sources, NEAR};
+
+pub const DEFOCUS: Operation = Operation {
+    name: "defocus",
+    about: "Depth of field from a depth channel: each pixel spreads over an aperture whose \
+            radius grows with its distance from the focus plane",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = Params::read(args)?;
+        let op = Defocus {
+            focus: p.focus,
+            scale: p.scale,
+            max_radius: p.max_radius as usize,
+            aperture: p.aperture,
+            z_channel: p.z_channel,
+            layers: args.layers.clone(),
+        };
+        Ok(graph.add(op, inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// Depth in focus.
+        focus: f32 [FOCUS],
+        /// Blur radius in pixels of what is far behind the focus plane:
+        /// radius = scale * |1 - focus / Z|.
+        scale: f32 [DEFOCUS_SCALE],
+        /// Largest radius (the rows read above and below).
+        max_radius: u32 [MAX_RADIUS],
+        /// disc, hexagon, or N-gon (5-gon, 8-gon...).
+        aperture: Aperture = "disc",
+        /// The depth channel.
+        z_channel: String = "Z",
+    }
+}
 
 pub struct Defocus {
     /// Depth in focus.

@@ -1,0 +1,348 @@
+//! An operation declared once: its name, inputs and parameters (names, help,
+//! defaults, bounds) and how it adds its nodes to a graph. The command line
+//! (src/cli.rs) and the job file's op node (src/job.rs) are both made from
+//! the declaration, so the two cannot disagree. Recipe: specs/architecture.md,
+//! "Adding an operation".
+
+use super::layers::Selection;
+use crate::engine::graph::{GraphBuilder, NodeId};
+use crate::engine::plan::Job;
+use crate::error::Result;
+use crate::params::Bound;
+use std::collections::BTreeMap;
+
+pub struct Operation {
+    /// The subcommand and the job file's `op = "NAME"`.
+    pub name: &'static str,
+    /// One line for `--help` (longer text after a blank line).
+    pub about: &'static str,
+    /// The inputs in order; with `repeats`, the last one may be given again
+    /// (two or more in all).
+    pub inputs: &'static [Input],
+    pub repeats: bool,
+    pub params: &'static [Param],
+    /// Takes `--layer`, `--all-layers`, `--view` (job keys `layers`,
+    /// `all_layers`, `view`), and `--part`, `--level`.
+    pub layers: bool,
+    /// Takes `--straight` (job key `straight`).
+    pub straight: bool,
+    /// The input whose header, display window and other channels the
+    /// command's output keeps (`None`: the last one).
+    pub header: Option<usize>,
+    /// Adds the operation's nodes reading `inputs` (one per declared input,
+    /// or more when it repeats); the last node added is the result.
+    pub build: fn(&Args, &mut GraphBuilder, &[NodeId]) -> std::result::Result<NodeId, String>,
+    /// On the command line, before the graph is built: parameters measured
+    /// from the inputs (by a first pass over `job`, an identity graph of
+    /// them) where they were not given.
+    pub measure: Option<Measure>,
+}
+
+/// Measures parameters (name, value as given on the command line) from a
+/// first pass over the inputs.
+pub type Measure = fn(&Args, &Job) -> Result<Vec<(&'static str, String)>>;
+
+pub struct Input {
+    /// The positional argument's name in `--help`, or the option (`--NAME`)
+    /// when `named`.
+    pub name: &'static str,
+    pub help: &'static str,
+    pub named: bool,
+}
+
+/// A positional input.
+pub const fn input(name: &'static str, help: &'static str) -> Input {
+    Input {
+        name,
+        help,
+        named: false,
+    }
+}
+
+/// An input given as `--NAME FILE`.
+pub const fn named(name: &'static str, help: &'static str) -> Input {
+    Input {
+        name,
+        help,
+        named: true,
+    }
+}
+
+impl Operation {
+    /// Whether `count` inputs are what it takes.
+    pub fn takes(&self, count: usize) -> bool {
+        match self.repeats {
+            true => count >= self.inputs.len().max(2),
+            false => count == self.inputs.len(),
+        }
+    }
+
+    /// "two inputs (a, b)", for messages.
+    pub fn arity(&self) -> String {
+        let names: Vec<&str> = self.inputs.iter().map(|i| i.name).collect();
+        let count = ["no", "one", "two", "three", "four"]
+            .get(self.inputs.len())
+            .copied()
+            .unwrap_or("several");
+        match (self.repeats, self.inputs.len()) {
+            (true, _) => "two or more inputs".to_string(),
+            (false, 1) => "one input".to_string(),
+            (false, _) => format!("{count} inputs ({})", names.join(", ")),
+        }
+    }
+
+    pub fn param(&self, name: &str) -> Option<&'static Param> {
+        self.params.iter().find(|p| p.name == name)
+    }
+}
+
+/// A parameter: `--NAME` on the command line (with `-` for `_`), `NAME` in
+/// a job file.
+pub struct Param {
+    pub name: &'static str,
+    pub help: &'static str,
+    /// The default, as it would be typed; `None`: required, unless optional.
+    pub default: Option<&'static str>,
+    /// An `Option`: absent means not given (no default).
+    pub optional: bool,
+    /// A switch: `--NAME` alone on the command line, `true`/`false` in jobs.
+    pub flag: bool,
+    /// The values it takes, for `--help`.
+    pub choices: &'static [&'static str],
+    /// Parses and checks a value (bounds included).
+    pub check: fn(&str) -> std::result::Result<(), String>,
+}
+
+impl Param {
+    pub fn required(&self) -> bool {
+        self.default.is_none() && !self.optional && !self.flag
+    }
+}
+
+/// A parameter's type: how a value is read from text (the command line's,
+/// or a job file's value written as text).
+pub trait Value: Sized {
+    fn parse(text: &str) -> std::result::Result<Self, String>;
+    /// Numbers: parsed and checked against `bound` (crate::params).
+    fn bounded(text: &str, _bound: &Bound) -> std::result::Result<Self, String> {
+        Self::parse(text)
+    }
+    /// The value when the parameter is not given and has no default.
+    fn absent() -> Option<Self> {
+        None
+    }
+    const FLAG: bool = false;
+    const OPTIONAL: bool = false;
+    const CHOICES: &'static [&'static str] = &[];
+}
+
+macro_rules! number {
+    ($($t:ty),*) => {$(
+        impl Value for $t {
+            fn parse(text: &str) -> std::result::Result<Self, String> {
+                text.trim()
+                    .parse()
+                    .map_err(|_| format!("expected a number, not '{text}'"))
+            }
+            fn bounded(text: &str, bound: &Bound) -> std::result::Result<Self, String> {
+                bound.parse(text)
+            }
+        }
+    )*};
+}
+number!(f32, u32);
+
+impl Value for bool {
+    fn parse(text: &str) -> std::result::Result<Self, String> {
+        match text {
+            "true" => Ok(true),
+            "false" => Ok(false),
+            _ => Err(format!("expected true or false, not '{text}'")),
+        }
+    }
+    fn absent() -> Option<Self> {
+        Some(false)
+    }
+    const FLAG: bool = true;
+}
+
+impl Value for String {
+    fn parse(text: &str) -> std::result::Result<Self, String> {
+        Ok(text.to_string())
+    }
+}
+
+impl<T: Value> Value for Option<T> {
+    fn parse(text: &str) -> std::result::Result<Self, String> {
+        T::parse(text).map(Some)
+    }
+    fn bounded(text: &str, bound: &Bound) -> std::result::Result<Self, String> {
+        T::bounded(text, bound).map(Some)
+    }
+    fn absent() -> Option<Self> {
+        Some(None)
+    }
+    const OPTIONAL: bool = true;
+    const CHOICES: &'static [&'static str] = T::CHOICES;
+}
+
+/// A value that is one of a few names (an enum), case-insensitive.
+pub fn choice<T: Copy>(
+    text: &str,
+    names: &[&str],
+    values: &[T],
+    what: &str,
+) -> std::result::Result<T, String> {
+    names
+        .iter()
+        .position(|n| n.eq_ignore_ascii_case(text.trim()))
+        .map(|i| values[i])
+        .ok_or_else(|| format!("unknown {what} '{text}' (one of: {})", names.join(", ")))
+}
+
+/// What an operation is built from: its parameters' values as text, from
+/// the command line or a job file, and the shared options.
+pub struct Args {
+    /// "op 'blur'" or "blur", for messages.
+    pub op: &'static str,
+    pub values: BTreeMap<&'static str, String>,
+    pub layers: Selection,
+    pub straight: bool,
+    /// Built for a job file, where no first pass measures anything.
+    pub job_file: bool,
+}
+
+impl Args {
+    /// Parameter `name` parsed by `parse`, else its default, else its
+    /// absent value; an error when it is required.
+    pub fn get<T: Value>(
+        &self,
+        name: &str,
+        default: Option<&str>,
+        parse: fn(&str) -> std::result::Result<T, String>,
+    ) -> std::result::Result<T, String> {
+        match self.values.get(name).map(String::as_str).or(default) {
+            Some(text) => parse(text),
+            None => T::absent().ok_or_else(|| format!("op '{}' needs {name}", self.op)),
+        }
+    }
+}
+
+/// Declares an operation's parameters as one struct, each field with its
+/// doc comment (the help), an optional bound (`[crate::params::BOUND]`) and
+/// an optional default as it would be typed (`= "1.0"`); a field without a
+/// default is required unless it is an `Option` or a `bool` (a switch).
+/// Makes `PARAMS` (the declaration) and `read` (the values from `Args`).
+macro_rules! params {
+    ($(#[doc = $sdoc:literal])* pub struct $name:ident {
+        $($(#[doc = $doc:literal])* $field:ident : $ty:ty $([$bound:path])? $(= $default:literal)?),* $(,)?
+    }) => {
+        $(#[doc = $sdoc])*
+        pub struct $name {
+            $($(#[doc = $doc])* pub $field: $ty,)*
+        }
+
+        impl $name {
+            pub const PARAMS: &'static [$crate::ops::declare::Param] = &[$(
+                $crate::ops::declare::Param {
+                    name: stringify!($field),
+                    help: concat!($($doc),*),
+                    default: params!(@default $($default)?),
+                    optional: <$ty as $crate::ops::declare::Value>::OPTIONAL,
+                    flag: <$ty as $crate::ops::declare::Value>::FLAG,
+                    choices: <$ty as $crate::ops::declare::Value>::CHOICES,
+                    check: |text| params!(@parse $ty, text $(, $bound)?).map(drop),
+                },
+            )*];
+
+            pub fn read(args: &$crate::ops::declare::Args) -> std::result::Result<Self, String> {
+                Ok($name {$(
+                    $field: args.get(
+                        stringify!($field),
+                        params!(@default $($default)?),
+                        |text| params!(@parse $ty, text $(, $bound)?),
+                    )?,
+                )*})
+            }
+        }
+    };
+    (@default) => { None };
+    (@default $default:literal) => { Some($default) };
+    (@parse $ty:ty, $text:expr) => { <$ty as $crate::ops::declare::Value>::parse($text) };
+    (@parse $ty:ty, $text:expr, $bound:path) => {
+        <$ty as $crate::ops::declare::Value>::bounded($text, &$bound)
+    };
+}
+pub(crate) use params;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::MIX;
+
+    params! {
+        /// A test op's parameters.
+        pub struct Example {
+            /// A bounded number.
+            mix: f32 [MIX] = "1",
+            /// Required.
+            radius: u32,
+            /// Optional.
+            reach: Option<u32>,
+            /// A switch.
+            invert: bool,
+        }
+    }
+
+    fn args(values: &[(&'static str, &str)]) -> Args {
+        Args {
+            op: "example",
+            values: values.iter().map(|&(k, v)| (k, v.to_string())).collect(),
+            layers: Selection::default(),
+            straight: false,
+            job_file: false,
+        }
+    }
+
+    #[test]
+    fn one_declaration_gives_names_help_defaults_and_checks() {
+        let names: Vec<&str> = Example::PARAMS.iter().map(|p| p.name).collect();
+        assert_eq!(names, ["mix", "radius", "reach", "invert"]);
+        let [mix, radius, reach, invert] = Example::PARAMS else {
+            panic!("four")
+        };
+        assert_eq!(mix.help.trim(), "A bounded number.");
+        assert_eq!(mix.default, Some("1"));
+        assert!(radius.required() && !mix.required() && !reach.required());
+        assert!(invert.flag && reach.optional);
+        assert!((mix.check)("0.5").is_ok() && (mix.check)("2").is_err());
+        assert!((radius.check)("x").is_err());
+    }
+
+    #[test]
+    fn values_defaults_and_the_missing_ones() {
+        let read = Example::read(&args(&[("radius", "3")])).unwrap();
+        assert_eq!(
+            (read.mix, read.radius, read.reach, read.invert),
+            (1.0, 3, None, false)
+        );
+        let read = Example::read(&args(&[
+            ("radius", "3"),
+            ("mix", "0.25"),
+            ("reach", "7"),
+            ("invert", "true"),
+        ]))
+        .unwrap();
+        assert_eq!(
+            (read.mix, read.radius, read.reach, read.invert),
+            (0.25, 3, Some(7), true)
+        );
+        let missing = Example::read(&args(&[])).err().unwrap();
+        assert_eq!(missing, "op 'example' needs radius");
+        let out_of_bounds = Example::read(&args(&[("radius", "3"), ("mix", "nan")]));
+        assert!(out_of_bounds
+            .err()
+            .unwrap()
+            .contains("mix must be a number from 0 to 1"));
+    }
+}
