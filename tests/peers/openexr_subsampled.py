@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""PyPI OpenEXR (3.5) as a peer for tests/luminance_chroma.rs.
+"""PyPI OpenEXR (3.5) as a peer for tests/suite/luminance_chroma.rs.
 
 write DIR: the same luminance/chroma images in every compression, seeded:
     yc_COMPRESSION.exr (Y, RY, BY; 38 x 70 from (-6, 4)) and

@@ -1,8 +1,7 @@
 //! Overnight safety: missing frames, bad frames, resuming, interruptions,
 //! full disks; nothing half-written ever sits at an output path.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};

@@ -2,8 +2,7 @@
 //! before flattening, checked against OpenEXR's and OIIO's own
 //! (`oiiotool --flatten`, `--deepmerge`) on the public deep passes.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

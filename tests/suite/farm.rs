@@ -2,8 +2,7 @@
 //! accepts and runs, with chunked output byte-identical to a local run, and
 //! a retried chunk that finishes what a killed one left.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::Path;
 use std::process::Command;
 

@@ -1,8 +1,7 @@
 //! `blur` against a whole-image separable reference (exact: same weights,
 //! same order of sums), energy conservation, and oiiotool's `--blur`.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -1,8 +1,7 @@
 //! Every merge operator, premult and unpremult against the whole-image
-//! reference (tests/common) and against oiiotool where it has the operator.
+//! reference (tests/suite/common) and against oiiotool where it has the operator.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::{Compression, LineOrder};
 use half::f16;
 use std::collections::BTreeMap;

@@ -1,7 +1,6 @@
-//! The streaming `over` against the whole-image reference in tests/common.
+//! The streaming `over` against the whole-image reference in tests/suite/common.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::path::Path;
 

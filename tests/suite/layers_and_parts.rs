@@ -2,8 +2,7 @@
 //! (`file.exr:PART`, `--part`) and data windows per operator, on real files
 //! and on multi-part files written here.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::Path;
 
 fn merge_ok(args: &[&str]) {

@@ -2,8 +2,7 @@
 //! line order and lossless compression, read tile row by tile row into the
 //! same strips as scanlines; mipmap and ripmap levels with `--level`.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer, Levels, RipMaps};
 use exr::math::{RoundingMode, Vec2};
 use exr::prelude::{Blocks, LayerAttributes, LineOrder, WritableImage};

@@ -3,8 +3,7 @@
 //! composite, those chunks are the background's bytes, and a damaged chunk
 //! is still refused.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::block::chunk::CompressedBlock;
 use exr::prelude::{Compression, LineOrder};
 use exrcomp::io::reader::ExrFile;

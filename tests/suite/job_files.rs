@@ -1,8 +1,7 @@
 //! `exrcomp run JOB.toml`: the examples in specs/, chains equal to the same
 //! steps run one by one, and errors that point at the job file's line.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::{Compression, LineOrder};
 use std::path::Path;
 use std::process::Command;

@@ -2,8 +2,7 @@
 //! gives a clear error quickly, and a real multi-layer sequence composites.
 //! Without the shared set, the few shipped images (tests/images) are read.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -129,7 +128,7 @@ fn check_image(
             command.arg("-a");
         }
         let out = command.arg(a).arg(b).output().unwrap();
-        // A file idiff cannot read (subsampled channels: tests/luminance_chroma.rs
+        // A file idiff cannot read (subsampled channels: tests/suite/luminance_chroma.rs
         // checks those) says so on stderr.
         (!out.status.success()).then(|| {
             String::from_utf8_lossy(&out.stdout).into_owned()

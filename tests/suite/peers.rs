@@ -1,8 +1,7 @@
 //! Cross-checks with the peer tools: oiiotool computes the same `over`, and
 //! OpenEXR's own library decodes every file we write.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::Path;
 use std::process::Command;
 

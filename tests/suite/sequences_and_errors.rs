@@ -1,8 +1,7 @@
 //! Frame patterns and ranges, the run summary, and bad input: clear errors
 //! naming the file and frame, the right exit codes, nothing half-written.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::path::Path;
 

@@ -2,8 +2,7 @@
 //! bottom up exactly, and from the top down within float rounding (alpha
 //! composes associatively: a12 = a1 + (1 - a1) a2).
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::{Compression, LineOrder};
 
 /// Random layers: count, windows and alphas from `seed`.

@@ -5,8 +5,7 @@
 //! OpenEXR decodes, or refuses the file in one line naming it (exit 3); never a
 //! panic, an abort, a signal, a hang, or anything left in the output folder.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 

@@ -5,9 +5,8 @@
 //! reader of the test's own, and the RGB reference is computed here, whole
 //! image, from ImfRgbaFile.cpp and ImfRgbaYca.cpp.
 
-mod common;
-
-use common::{public_image, run, s, shipped_images, stderr, Samples};
+use crate::common;
+use crate::common::{public_image, run, s, shipped_images, stderr, Samples};
 use half::f16;
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -7,8 +7,8 @@
 //! of a strip per frame or per strip shows in every long run, plainly. The
 //! two tests take turns, so that neither loads the machine for the other.
 
-mod common;
-use common::*;
+use crate::common;
+use crate::common::*;
 use std::path::Path;
 
 fn generate_sequence(

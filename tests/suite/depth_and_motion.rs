@@ -4,8 +4,7 @@
 //! sizes, strips, windows off zero and images shorter than the halo; and the
 //! properties the spec promises.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::f32::consts::PI;
 use std::path::Path;

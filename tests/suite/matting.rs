@@ -2,8 +2,7 @@
 //! edges, partial alpha, hair-thin lines) composited over known screens and
 //! backgrounds, then pulled back.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

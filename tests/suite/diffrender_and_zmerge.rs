@@ -1,8 +1,7 @@
 //! Differential rendering step by step against whole-image references and
 //! oiiotool; zmerge against its reference and oiiotool's --zover.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::prelude::LineOrder;
 use std::path::{Path, PathBuf};
 use std::process::Command;

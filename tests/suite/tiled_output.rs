@@ -3,8 +3,7 @@
 //! and a tiled background's tiles copied as they are where the foreground
 //! is transparent, as scanline blocks are.
 
-mod common;
-use common::*;
+use crate::common::*;
 use exr::block::chunk::CompressedBlock;
 use exr::math::Vec2;
 use exr::meta::attribute::{LevelMode, LineOrder};

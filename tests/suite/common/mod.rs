@@ -807,8 +807,8 @@ const HOSTILE_TIMEOUT: Duration = Duration::from_secs(60);
 /// Arguments from a damaged file, a good plate and an output path.
 pub type HostileArgs = fn(&str, &str, &str) -> Vec<String>;
 
-/// The commands a damaged file goes through (tests/damaged_corpus.rs,
-/// tests/hostile.rs), by name: their arguments for the damaged file, a good
+/// The commands a damaged file goes through (tests/suite/damaged_corpus.rs,
+/// tests/suite/hostile.rs), by name: their arguments for the damaged file, a good
 /// plate and the output path.
 pub fn hostile_commands() -> Vec<(&'static str, HostileArgs)> {
     fn v(args: &[&str]) -> Vec<String> {

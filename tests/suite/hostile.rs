@@ -4,8 +4,8 @@
 //! case ends within a bounded time, under a memory limit, with success or a
 //! one-line error naming the file: never a panic, an abort, a signal or a hang.
 
-mod common;
-use common::*;
+use crate::common;
+use crate::common::*;
 use exrcomp::io::reader::ExrFile;
 use std::path::Path;
 use std::time::{Duration, Instant};

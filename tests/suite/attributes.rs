@@ -3,8 +3,7 @@
 //! and custom typed ones (oiiotool's --attrib), checked against exrheader's
 //! own reading of the input.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

@@ -1,0 +1,28 @@
+//! The black-box suites, one test binary: each module runs the built exrcomp
+//! (and the peers) on real files; the maths of each operation is tested in
+//! memory beside it in src/.
+
+mod attributes;
+mod blur;
+mod common;
+mod damaged_corpus;
+mod deep;
+mod depth_and_motion;
+mod diffrender_and_zmerge;
+mod farm;
+mod hostile;
+mod job_files;
+mod layers_and_parts;
+mod luminance_chroma;
+mod matting;
+mod memory;
+mod merge_ops;
+mod over_reference;
+mod overnight;
+mod passthrough;
+mod peers;
+mod real_files;
+mod sequences_and_errors;
+mod stack;
+mod tiled;
+mod tiled_output;
