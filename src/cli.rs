@@ -428,3 +428,40 @@ impl Subcommand for Invocation {
         crate::ops::find(name).is_some()
     }
 }
+
+/// `clap::ValueEnum` for a domain type, here so that the type itself needs
+/// no clap: each variant's name on the command line and its help.
+macro_rules! value_enum {
+    ($ty:ty { $($variant:ident => $name:literal: $help:literal),* $(,)? }) => {
+        impl clap::ValueEnum for $ty {
+            fn value_variants<'a>() -> &'a [Self] {
+                &[$(<$ty>::$variant),*]
+            }
+            fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+                Some(match self {
+                    $(<$ty>::$variant => clap::builder::PossibleValue::new($name).help($help)),*
+                })
+            }
+        }
+    };
+}
+
+value_enum!(crate::engine::sources::MissingPolicy {
+    Error => "error": "Stop before any work, listing the missing frames",
+    Skip => "skip": "Leave out the output frames that miss an input",
+    Hold => "hold": "Use the nearest earlier frame of that input (the nearest later one before the first)",
+    Black => "black": "Use transparent black, shaped like the nearest frame of that input",
+});
+
+value_enum!(crate::generate::PlateKind {
+    Bg => "bg": "Opaque grainy gradient with a checker pattern; RGBA and Z",
+    Fg => "fg": "A soft-edged disc moving across a transparent frame; premultiplied RGBA, Z and screen-space motion vectors (forward.u, forward.v)",
+    Object => "object": "Differential rendering's object alone: a shaded ball above the middle of a transparent frame; RGBA and Z",
+    Proxy => "proxy": "The proxy scene without the object: an opaque grey ground; RGBA, Z",
+    Shadowed => "shadowed": "The object over the proxy with the ball's soft shadow on the ground",
+});
+
+value_enum!(crate::generate::PixelType {
+    Half => "half": "16-bit half floats",
+    Float => "float": "32-bit floats",
+});

@@ -27,7 +27,8 @@ impl Kind {
             Kind::Usage => 2,
             Kind::Input => 3,
             Kind::Output => 4,
-            Kind::Interrupted => crate::engine::interrupt::EXIT_CODE,
+            // 128 + SIGINT, as shells report an interrupted command.
+            Kind::Interrupted => 130,
         }
     }
 }

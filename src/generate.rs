@@ -6,7 +6,7 @@ use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PlateKind {
     /// Opaque grainy gradient with a checker pattern; RGBA and Z.
     Bg,
@@ -22,7 +22,7 @@ pub enum PlateKind {
     Shadowed,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PixelType {
     Half,
     Float,

@@ -3,6 +3,7 @@
 use super::plan::output_grid;
 use super::strip::Rows;
 use crate::error::{Error, Result};
+use crate::io::writer::IndexedChunk;
 use crate::io::{subsampling, zip};
 use exr::block::chunk::{
     Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
@@ -13,12 +14,6 @@ use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::Compression;
 use rayon::prelude::*;
-
-/// A compressed block and its index in the output's offset table.
-pub struct IndexedChunk {
-    pub index: usize,
-    pub chunk: Chunk,
-}
 
 /// Compresses `rows` (which start on a block row of `header`'s data window:
 /// scanline blocks, or tile rows) into chunks, in offset-table order; ZIP

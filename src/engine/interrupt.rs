@@ -6,13 +6,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 static REQUESTED: AtomicBool = AtomicBool::new(false);
 
-/// Exit code of an interrupted run (128 + SIGINT, as shells report it).
-pub const EXIT_CODE: i32 = 130;
-
 pub fn install() {
     let _ = ctrlc::set_handler(|| {
         if REQUESTED.swap(true, Ordering::SeqCst) {
-            std::process::exit(EXIT_CODE);
+            std::process::exit(crate::error::Kind::Interrupted.exit_code());
         }
         eprintln!("\nexrcomp: stopping: abandoning the frames in flight (again to quit at once)");
     });

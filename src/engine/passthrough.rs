@@ -7,11 +7,11 @@
 //! are such blocks.
 
 use super::decode::{decode_strip, InputCursor};
-use super::encode::IndexedChunk;
 use super::graph::{Graph, Node};
 use super::plan::{output_grid, FramePlan};
 use super::strip::Rows;
 use crate::error::Result;
+use crate::io::writer::IndexedChunk;
 use exr::block::chunk::CompressedBlock;
 use exr::math::Vec2;
 use exr::prelude::Compression;

@@ -5,7 +5,7 @@
 
 use super::compose::Composer;
 use super::decode::{decode_all, InputCursor};
-use super::encode::{encode_rows, IndexedChunk};
+use super::encode::encode_rows;
 use super::interrupt;
 use super::passthrough::PassThrough;
 use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
@@ -13,6 +13,7 @@ use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
 use crate::io::writer::write_file;
+use crate::io::writer::IndexedChunk;
 use crossbeam_channel::{bounded, Receiver, Sender};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;

@@ -5,7 +5,7 @@ use super::plan::{FrameSources, Source};
 use crate::error::{Error, Kind, Result};
 use crate::io::sequence::{format_frame_list, FramePattern};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MissingPolicy {
     /// Stop before any work, listing the missing frames.
     Error,

@@ -2,8 +2,8 @@
 //! compressed chunks under a new offset table, decoding nothing.
 
 use super::reader::ExrFile;
+use super::writer::IndexedChunk;
 use super::writer::{write_file, Parts};
-use crate::engine::encode::IndexedChunk;
 use crate::error::Result;
 use exr::meta::attribute::IntegerBounds;
 use std::path::{Path, PathBuf};

@@ -8,14 +8,20 @@
 //! OpenEXR then refuses the file).
 
 use super::reader::ExrFile;
-use crate::engine::encode::IndexedChunk;
 use crate::error::{Error, Result};
+use exr::block::chunk::Chunk;
 use exr::meta::attribute::{AttributeValue, BlockType, KeyCode};
 use exr::meta::header::Header;
 use exr::meta::{MetaData, Requirements};
 use std::fs::{self, File};
 use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
+
+/// A compressed block and its index in the output's offset table.
+pub struct IndexedChunk {
+    pub index: usize,
+    pub chunk: Chunk,
+}
 
 /// Where a file is written before it is complete: hidden, in the same folder
 /// (so the final rename stays on one file system), unique to this process.
