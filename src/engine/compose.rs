@@ -227,6 +227,24 @@ mod tests {
         }
     }
 
+    #[test]
+    fn bands_are_a_few_per_thread_and_never_tiny() {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(4)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            // 16 bands for 4 threads where rows are many and wide.
+            assert_eq!(band_rows(256, 3840), 16);
+            assert_eq!(band_rows(250, 3840), 16);
+            // Narrow rows: 16 Ki samples at least, so 2048 wide takes 8.
+            assert_eq!(band_rows(64, 2048), 8);
+            assert_eq!(band_rows(64, 1), 16 << 10);
+            // Wider than the floor: one row a band at the least.
+            assert_eq!(band_rows(3, 1 << 20), 1);
+        });
+    }
+
     fn column_image(height: usize) -> Vec<f32> {
         (0..height).map(|y| (y * y % 17) as f32).collect()
     }

@@ -180,3 +180,103 @@ impl Selection {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exr::meta::attribute::SampleType;
+
+    fn list(names: &[&str]) -> Vec<ChannelDescription> {
+        names
+            .iter()
+            .map(|n| ChannelDescription::named(*n, SampleType::F16))
+            .collect()
+    }
+
+    fn selection(layers: &[&str], all: bool, view: Option<&str>) -> Selection {
+        Selection {
+            layers: layers.iter().map(|l| l.to_string()).collect(),
+            all,
+            view: view.map(str::to_string),
+        }
+    }
+
+    fn prefixes(layers: &[Layer]) -> Vec<&str> {
+        layers.iter().map(|l| l.prefix.as_str()).collect()
+    }
+
+    #[test]
+    fn layers_resolve_to_prefixes_with_their_alpha_fallbacks() {
+        let file = list(&[
+            "A",
+            "B",
+            "G",
+            "R",
+            "diffuse.B",
+            "diffuse.G",
+            "diffuse.R",
+            "Z",
+        ]);
+        let unnamed = selection(&[], false, None).resolve(&[&file]);
+        assert_eq!(
+            unnamed,
+            [Layer {
+                prefix: "".into(),
+                alphas: vec!["A".into()]
+            }]
+        );
+        let diffuse = selection(&["diffuse"], false, None).resolve(&[&file]);
+        assert_eq!(diffuse[0].prefix, "diffuse.");
+        assert_eq!(diffuse[0].alphas, ["diffuse.A", "A"]);
+        assert_eq!(
+            diffuse[0].colours().collect::<Vec<_>>(),
+            ["diffuse.R", "diffuse.G", "diffuse.B"]
+        );
+        assert!(selection(&["specular"], false, None)
+            .check(&[&file])
+            .is_err());
+        let message = selection(&["specular"], false, None)
+            .check(&[&file])
+            .unwrap_err();
+        assert_eq!(
+            message,
+            "layer 'specular' not found (layers with colour: (unnamed), diffuse)"
+        );
+    }
+
+    #[test]
+    fn all_layers_are_those_with_colour_in_every_input() {
+        let a = list(&["R", "diffuse.R", "spec.G", "Z"]);
+        let b = list(&["G", "diffuse.B", "mask.A"]);
+        let all = selection(&[], true, None).resolve(&[&a, &b]);
+        assert_eq!(prefixes(&all), ["", "diffuse."]);
+    }
+
+    #[test]
+    fn a_view_reads_its_channels_where_the_file_has_them_else_the_default_view() {
+        let stereo = list(&[
+            "A",
+            "B",
+            "G",
+            "R",
+            "left.A",
+            "left.B",
+            "left.G",
+            "left.R",
+            "diffuse.left.R",
+            "diffuse.R",
+        ]);
+        let left = selection(&[], false, Some("left")).resolve(&[&stereo]);
+        assert_eq!(left[0].prefix, "left.");
+        assert_eq!(left[0].alphas, ["left.A", "A"]);
+        let diffuse = selection(&["diffuse"], false, Some("left")).resolve(&[&stereo]);
+        assert_eq!(diffuse[0].prefix, "diffuse.left.");
+        assert_eq!(diffuse[0].alphas, ["diffuse.left.A", "left.A", "A"]);
+        // The default view (`right` here) has no view name in its channels.
+        let right = selection(&["diffuse"], false, Some("right")).resolve(&[&stereo]);
+        assert_eq!(prefixes(&right), ["diffuse."]);
+        // Filtered: the selected R, G, B, A the file has.
+        let filtered = selection(&["diffuse"], false, Some("left")).filtered(&stereo);
+        assert_eq!(filtered, ["diffuse.left.R"]);
+    }
+}

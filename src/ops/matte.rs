@@ -326,3 +326,107 @@ impl Op for Matte {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(screen: [f32; 3]) -> Key {
+        Key {
+            screen,
+            gain: 1.0,
+            balance: 0.5,
+            clip: (0.0, 1.0),
+            despill: false,
+            invert: false,
+        }
+    }
+
+    #[test]
+    fn the_keyer_gives_the_screen_no_alpha_and_a_foreground_without_excess_all() {
+        let green = key([0.1, 0.8, 0.15]);
+        assert_eq!(green.pixel([0.1, 0.8, 0.15]).1, 0.0);
+        assert_eq!(green.pixel([0.6, 0.3, 0.5]).1, 1.0);
+        let blue = key([0.0, 0.0, 1.0]);
+        assert_eq!(blue.pixel([0.2, 0.3, 0.25]).1, 1.0);
+        // F over the screen with alpha α, F without screen excess (G the
+        // mean of R and B): α and
+        // α F come back (specs/ops.md, "key").
+        for alpha in [0.0f32, 0.25, 0.5, 0.9, 1.0] {
+            let f = [0.3f32, 0.35, 0.4];
+            let screen = green.screen;
+            let c: [f32; 3] = std::array::from_fn(|k| alpha * f[k] + (1.0 - alpha) * screen[k]);
+            let (colour, a) = green.pixel(c);
+            assert!((a - alpha).abs() < 1e-5, "{a} for {alpha}");
+            for k in 0..3 {
+                assert!((colour[k] - alpha * f[k]).abs() < 1e-5, "{colour:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn clip_invert_and_despill_as_specified() {
+        let mut k = key([0.0, 1.0, 0.0]);
+        // excess 0.5 of the screen's 1: raw alpha 0.5, clipped to 0.25..0.75.
+        k.clip = (0.25, 0.75);
+        assert_eq!(k.pixel([0.0, 0.5, 0.0]).1, 0.5);
+        assert_eq!(k.pixel([0.0, 0.8, 0.0]).1, 0.0);
+        k.invert = true;
+        assert_eq!(k.pixel([0.0, 0.8, 0.0]).1, 1.0);
+        let mut k = key([0.0, 1.0, 0.0]);
+        k.despill = true;
+        // An opaque pixel with spill: green lowered to the others' mean.
+        k.gain = 0.0;
+        let (colour, alpha) = k.pixel([0.4, 0.7, 0.2]);
+        assert_eq!((alpha, colour), (1.0, [0.4, 0.3, 0.2]));
+        // No excess: untouched, bit for bit.
+        assert_eq!(k.pixel([0.4, 0.1, 0.2]).0, [0.4, 0.1, 0.2]);
+    }
+
+    #[test]
+    fn the_difference_matte_steps_or_smoothsteps_on_the_largest_difference() {
+        let hard = DiffMatte {
+            threshold: 0.1,
+            softness: 0.0,
+            invert: false,
+        };
+        assert_eq!(hard.alpha([0.5, 0.5, 0.5], [0.45, 0.5, 0.55]), 0.0);
+        assert_eq!(hard.alpha([0.5, 0.5, 0.5], [0.5, 0.35, 0.5]), 1.0);
+        let soft = DiffMatte {
+            softness: 0.2,
+            ..hard
+        };
+        // d = 0.2: half way through the ramp, smoothstep(0.5) = 0.5.
+        assert!((soft.alpha([0.7, 0.0, 0.0], [0.5, 0.0, 0.0]) - 0.5).abs() < 1e-6);
+        let t = 0.25f32;
+        let d = 0.1 + 0.2 * t;
+        let want = t * t * (3.0 - 2.0 * t);
+        assert!((soft.alpha([d, 0.0, 0.0], [0.0, 0.0, 0.0]) - want).abs() < 1e-6);
+        let inverted = DiffMatte {
+            invert: true,
+            ..soft
+        };
+        assert_eq!(inverted.alpha([1.0, 0.0, 0.0], [0.0, 0.0, 0.0]), 0.0);
+    }
+
+    #[test]
+    fn triangulation_recovers_colour_and_alpha_from_two_backgrounds() {
+        let (ba, bb) = ([0.0f32, 0.0, 1.0], [0.0f32, 1.0, 0.0]);
+        for (f, alpha) in [
+            ([0.2f32, 0.1, 0.3], 0.5f32),
+            ([0.0; 3], 0.0),
+            ([0.7, 0.6, 0.5], 1.0),
+        ] {
+            let over =
+                |b: [f32; 3]| -> [f32; 3] { std::array::from_fn(|k| f[k] + (1.0 - alpha) * b[k]) };
+            let (colour, a) = triangulate(over(ba), ba, over(bb), bb);
+            assert!((a - alpha).abs() < 1e-6, "{a} for {alpha}");
+            for k in 0..3 {
+                assert!((colour[k] - f[k]).abs() < 1e-6, "{colour:?} for {f:?}");
+            }
+        }
+        // Backgrounds alike: opaque, the mean of the two.
+        let (c, a) = triangulate([0.2; 3], [0.5; 3], [0.4; 3], [0.5; 3]);
+        assert_eq!((c, a), ([0.3f32; 3].map(|v| v), 1.0));
+    }
+}

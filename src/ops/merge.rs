@@ -560,3 +560,228 @@ fn visible_columns(rows: &Rows, layers: &[Layer], y: i32) -> Range<usize> {
         span
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ops::testing::{compute, image_in, sample, Pixel};
+
+    /// The table of specs/ops.md, written out again: colour and alpha of
+    /// each operator, and its data window rule.
+    fn reference(op: &str, a: f32, aa: f32, b: f32, ab: f32) -> (f32, f32) {
+        let f = |a: f32, aa: f32, b: f32, ab: f32| -> f32 {
+            match op {
+                "over" => a + (1.0 - aa) * b,
+                "under" => b + (1.0 - ab) * a,
+                "in" => a * ab,
+                "out" => a * (1.0 - ab),
+                "atop" => a * ab + b * (1.0 - aa),
+                "xor" => a * (1.0 - ab) + b * (1.0 - aa),
+                "plus" => a + b,
+                "minus" => a - b,
+                "from" => b - a,
+                "multiply" => a * b,
+                "screen" if a > 1.0 && b > 1.0 => a.max(b),
+                "screen" => a + b - a * b,
+                "max" => a.max(b),
+                "min" => a.min(b),
+                "difference" => (a - b).abs(),
+                "divide" if b == 0.0 => 0.0,
+                "divide" => a / b,
+                "mask" => b * aa,
+                "stencil" => b * (1.0 - aa),
+                "copy" => a,
+                _ => unreachable!("{op}"),
+            }
+        };
+        let alpha = if op == "atop" { ab } else { f(aa, aa, ab, ab) };
+        (f(a, aa, b, ab), alpha)
+    }
+
+    fn window_rule(op: &str) -> &'static str {
+        match op {
+            "in" | "mask" | "multiply" | "divide" => "intersection",
+            "out" | "copy" => "A",
+            "atop" | "stencil" => "B",
+            _ => "union",
+        }
+    }
+
+    fn close(x: f32, y: f32) -> bool {
+        x == y || (x - y).abs() <= 1e-6 * x.abs().max(y.abs()).max(1.0)
+    }
+
+    // Colours that cross 0 and 1, alphas from 0 to above 1 and negative.
+    fn colour_a(x: i32, y: i32) -> f32 {
+        [0.25, -0.5, 1.5, 0.0, 3.0, 0.75][((x + 2 * y) % 6) as usize]
+    }
+    fn alpha_a(x: i32, y: i32) -> f32 {
+        [0.5, 0.0, 1.0, 0.25, 1.25, 0.0][((2 * x + y) % 6) as usize]
+    }
+    fn colour_b(x: i32, y: i32) -> f32 {
+        [2.0, 0.5, 0.0, -0.25, 1.0, 4.0, 0.125][((x + y) % 7) as usize]
+    }
+    fn alpha_b(x: i32, y: i32) -> f32 {
+        [1.0, 0.5, 0.0, 0.75, -0.5][((x * y + x) % 5) as usize]
+    }
+
+    /// A and B on overlapping windows inside 10 x 6 rows.
+    fn inputs() -> (Rows, Rows) {
+        let side = |window, colour: Pixel, alpha: Pixel| {
+            let channels = [("A", alpha), ("B", colour), ("G", colour), ("R", colour)];
+            image_in(0..10, 0..6, window, &channels)
+        };
+        (
+            side(IntegerBounds::new((0, 0), (6, 4)), &colour_a, &alpha_a),
+            side(IntegerBounds::new((3, 1), (7, 5)), &colour_b, &alpha_b),
+        )
+    }
+
+    fn merge(op: MergeOp, mix: f32, straight: bool) -> Merge {
+        Merge {
+            op,
+            straight,
+            mix,
+            layers: Selection::default(),
+        }
+    }
+
+    /// Every pixel of `op` over the inputs against `expected(a, αa, b, αb)`.
+    fn check_every_pixel(
+        name: &str,
+        merge: &Merge,
+        expected: impl Fn(f32, f32, f32, f32) -> (f32, f32),
+    ) {
+        let (a, b) = inputs();
+        let out = compute(merge, &[&a, &b]).unwrap();
+        let window = out.valid;
+        for y in 0..6 {
+            for x in 0..10 {
+                let inside = |w: IntegerBounds| {
+                    x >= w.position.x() && x < w.end().x() && y >= w.position.y() && y < w.end().y()
+                };
+                let get = |rows: &Rows, c: &str| match inside(rows.valid) {
+                    true => sample(rows, c, x, y).unwrap(),
+                    false => 0.0,
+                };
+                let (want_c, want_a) =
+                    expected(get(&a, "R"), get(&a, "A"), get(&b, "R"), get(&b, "A"));
+                let (got_c, got_a) = (get(&out, "R"), get(&out, "A"));
+                if inside(window) {
+                    assert!(
+                        close(got_c, want_c) && close(got_a, want_a),
+                        "{name} at {x},{y}: ({got_c}, {got_a}) where ({want_c}, {want_a})"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_operator_gives_the_table_s_colour_alpha_and_window() {
+        let (a, b) = inputs();
+        for name in MergeOp::CHOICES {
+            let op = MergeOp::parse(name).unwrap();
+            let m = merge(op, 1.0, false);
+            check_every_pixel(name, &m, |a, aa, b, ab| reference(name, a, aa, b, ab));
+            let window = m.data_window(&[a.valid, b.valid]);
+            let want = match window_rule(name) {
+                "union" => union(a.valid, b.valid),
+                "intersection" => intersection(a.valid, b.valid),
+                "A" => a.valid,
+                _ => b.valid,
+            };
+            assert_eq!(window, want, "{name}'s window");
+        }
+    }
+
+    #[test]
+    fn mix_blends_with_b_and_adds_b_s_window() {
+        let (a, b) = inputs();
+        for name in ["over", "multiply", "copy", "difference"] {
+            let op = MergeOp::parse(name).unwrap();
+            let m = merge(op, 0.25, false);
+            check_every_pixel(name, &m, |a, aa, b, ab| {
+                let (c, alpha) = reference(name, a, aa, b, ab);
+                (b + 0.25 * (c - b), ab + 0.25 * (alpha - ab))
+            });
+            let unmixed = merge(op, 1.0, false).data_window(&[a.valid, b.valid]);
+            assert_eq!(
+                m.data_window(&[a.valid, b.valid]),
+                union(unmixed, b.valid),
+                "{name}"
+            );
+        }
+    }
+
+    #[test]
+    fn straight_colour_is_premultiplied_merged_and_divided_again() {
+        for name in ["over", "plus", "screen"] {
+            let m = merge(MergeOp::parse(name).unwrap(), 1.0, true);
+            check_every_pixel(name, &m, |a, aa, b, ab| {
+                let (c, alpha) = reference(name, a * aa, aa, b * ab, ab);
+                (if alpha == 0.0 { 0.0 } else { c / alpha }, alpha)
+            });
+        }
+    }
+
+    #[test]
+    fn a_transparent_black_a_leaves_b_bit_for_bit_under_the_operators_that_pass_it() {
+        let b_window = IntegerBounds::new((0, 0), (4, 2));
+        let minus_zero: Pixel = &|x, _| if x == 1 { -0.0 } else { 0.3 };
+        let zero: Pixel = &|_, _| 0.0;
+        let b = image_in(0..4, 0..2, b_window, &[("A", zero), ("R", minus_zero)]);
+        let a = image_in(0..4, 0..2, b_window, &[("A", zero), ("R", zero)]);
+        for name in MergeOp::CHOICES {
+            let m = merge(MergeOp::parse(name).unwrap(), 1.0, false);
+            let passes = m.passes_second();
+            assert_eq!(
+                passes,
+                ["over", "under", "atop", "xor", "plus", "from", "stencil"].contains(name),
+                "{name}"
+            );
+            // Asked only of the operators that pass B.
+            if passes {
+                assert!(m.hides_nothing(&a, &b.channels, 0..2), "{name}");
+                let out = compute(&m, &[&a, &b]).unwrap();
+                let bits = sample(&out, "R", 1, 0).unwrap().to_bits();
+                assert_eq!(bits, (-0.0f32).to_bits(), "{name} keeps B's -0");
+            }
+        }
+        // A visible pixel anywhere in the rows: the block must be composited.
+        let one: Pixel = &|x, y| if (x, y) == (3, 1) { 0.5 } else { 0.0 };
+        let visible = image_in(0..4, 0..2, b_window, &[("A", one), ("R", zero)]);
+        assert!(!merge(MergeOp::Over, 1.0, false).hides_nothing(&visible, &b.channels, 0..2));
+        assert!(merge(MergeOp::Over, 1.0, false).hides_nothing(&visible, &b.channels, 0..1));
+    }
+
+    #[test]
+    fn channels_are_b_s_plus_the_layer_s_that_only_a_has() {
+        let v: Pixel = &|_, _| 1.0;
+        let a = image_in(
+            0..2,
+            0..1,
+            IntegerBounds::new((0, 0), (2, 1)),
+            &[("A", v), ("R", v), ("Z", v)],
+        );
+        let b = image_in(
+            0..2,
+            0..1,
+            IntegerBounds::new((0, 0), (2, 1)),
+            &[("G", v), ("Y", v)],
+        );
+        let m = merge(MergeOp::Over, 1.0, false);
+        let names: Vec<String> = m
+            .channels(&[&a.channels, &b.channels])
+            .iter()
+            .map(|c| c.name.to_string())
+            .collect();
+        // A's Z is not composited, so it does not come through.
+        assert_eq!(names, ["A", "G", "R", "Y"]);
+        let out = compute(&m, &[&a, &b]).unwrap();
+        // B without alpha is opaque inside its window: A over it.
+        assert_eq!(sample(&out, "A", 0, 0), Some(1.0));
+        assert_eq!(sample(&out, "G", 0, 0), Some(0.0));
+        assert_eq!(sample(&out, "Y", 1, 0), Some(1.0));
+    }
+}

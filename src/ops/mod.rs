@@ -11,6 +11,8 @@ pub mod merge;
 pub mod morphology;
 pub mod premult;
 pub mod stereo;
+#[cfg(test)]
+pub mod testing;
 pub mod vblur;
 pub mod zmerge;
 

@@ -224,3 +224,50 @@ impl Op for VectorBlur {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The samples of specs/ops.md's loop, written out again.
+    fn samples(dx: f32, dy: f32) -> Vec<(i32, i32)> {
+        let n = ((dx * dx + dy * dy).sqrt().round() as usize).max(1);
+        (0..n)
+            .map(|k| {
+                let t = k as f32 / n as f32;
+                ((t * dx).round() as i32, (t * dy).round() as i32)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_streak_samples_its_segment_and_reaches_its_farthest_row() {
+        for (dx, dy) in [
+            (0.0, 0.0),
+            (5.0, 0.0),
+            (0.0, -7.0),
+            (3.5, 2.25),
+            (-10.0, 10.0),
+        ] {
+            let streak = Streak::new(dx, dy);
+            let want = samples(dx, dy);
+            assert_eq!(streak.n, want.len(), "({dx}, {dy})");
+            for (k, &at) in want.iter().enumerate() {
+                assert_eq!(streak.offset(k), at, "({dx}, {dy}) sample {k}");
+            }
+            let farthest = want.iter().map(|s| s.1.unsigned_abs()).max().unwrap() as usize;
+            assert_eq!(streak.rows(), farthest, "({dx}, {dy})");
+        }
+        // A pixel moved by (d, 0) covers d pixels from where it was.
+        assert_eq!(samples(4.0, 0.0), [(0, 0), (1, 0), (2, 0), (3, 0)]);
+    }
+
+    #[test]
+    fn rows_reached_is_the_longest_scaled_vertical_reach() {
+        assert_eq!(rows_reached(1.0, &[0.0, 3.0, 1.0], &[0.0, 0.0, -6.0]), 5);
+        assert_eq!(rows_reached(2.0, &[0.0, 3.0, 1.0], &[0.0, 0.0, -6.0]), 11);
+        assert_eq!(rows_reached(0.0, &[9.0], &[9.0]), 0);
+        // Not a number streaks nowhere, never everywhere.
+        assert_eq!(rows_reached(1.0, &[f32::NAN], &[f32::INFINITY]), 0);
+    }
+}

@@ -223,3 +223,25 @@ fn a_span_of_the_footprint_is_every_offset_within_the_radius() {
         }
     }
 }
+
+#[test]
+fn the_circle_of_confusion_is_scale_times_the_focus_error_clamped() {
+    let op = Defocus {
+        focus: 10.0,
+        scale: 8.0,
+        max_radius: 12,
+        aperture: Aperture::Disc,
+        z_channel: "Z".into(),
+        layers: Default::default(),
+    };
+    // r = S |1 - F / Z|: in focus 0, twice as far S / 2, far away S.
+    assert_eq!(op.coc(10.0), 0.0);
+    assert_eq!(op.coc(20.0), 4.0);
+    assert_eq!(op.coc(1e9), 8.0 * (1.0 - 10.0 / 1e9));
+    // Nearer than the focus grows without bound, up to the maximum.
+    assert_eq!(op.coc(5.0), 8.0);
+    assert_eq!(op.coc(2.0), 12.0);
+    for z in [0.0, -1.0, f32::NAN, f32::NEG_INFINITY] {
+        assert_eq!(op.coc(z), 0.0, "{z}");
+    }
+}
