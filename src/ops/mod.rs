@@ -42,3 +42,34 @@ pub const ALL: &[&Operation] = &[
 pub fn find(name: &str) -> Option<&'static Operation> {
     ALL.iter().copied().find(|op| op.name == name)
 }
+
+#[cfg(test)]
+mod tests {
+    /// specs/job-format.md's table of op nodes lists every operation and each
+    /// of its parameters (a row saying "as merge" shares merge's keys).
+    #[test]
+    fn the_job_format_lists_every_operation_and_parameter() {
+        let spec = include_str!("../../specs/job-format.md");
+        let row = |name: &str| {
+            spec.lines()
+                .find(|l| l.starts_with("| `op = ") && l.contains(&format!("\"{name}\"")))
+        };
+        for op in super::ALL {
+            let Some(mut line) = row(op.name) else {
+                panic!("specs/job-format.md has no row for op '{}'", op.name)
+            };
+            if line.contains("as merge") {
+                line = row("merge").expect("merge's row");
+            }
+            for param in op.params {
+                let (plain, valued) = (format!("`{}`", param.name), format!("`{} = ", param.name));
+                assert!(
+                    line.contains(&plain) || line.contains(&valued),
+                    "specs/job-format.md's row for '{}' lacks `{}`",
+                    op.name,
+                    param.name
+                );
+            }
+        }
+    }
+}
