@@ -41,7 +41,7 @@ pub fn run(command: Command) -> Result<()> {
             let cwd = working_folder()?;
             let task = farm::task_command(&job.command, &job.frames, &cwd)?;
             let exrcomp = farm::this_exrcomp()?;
-            let text = match &farm {
+            match &farm {
                 Farm::Openjd(_) => {
                     let tasks = farm::Tasks::new(
                         &job.frames,
@@ -49,11 +49,15 @@ pub fn run(command: Command) -> Result<()> {
                         job.task_chunking,
                         job.target_runtime,
                     )?;
-                    farm::openjd_template(&exrcomp, &task, &tasks)
+                    let openjd = farm::openjd_template(&exrcomp, &task, &tasks);
+                    farm::write_template(&farm::values_path(&job.output), &openjd.values)?;
+                    farm::write_template(&job.output, &openjd.template)
                 }
-                Farm::Opencue(_) => farm::opencue_outline(&exrcomp, &task, &job.frames, job.chunk)?,
-            };
-            farm::write_template(&job.output, &text)
+                Farm::Opencue(_) => farm::write_template(
+                    &job.output,
+                    &farm::opencue_outline(&exrcomp, &task.args, &job.frames, job.chunk)?,
+                ),
+            }
         }
         Command::Run { job, output, run } => {
             let mut plan = crate::job::load(&job)?;

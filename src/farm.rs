@@ -46,13 +46,29 @@ pub fn range_expression(frames: &[i64]) -> String {
 /// Commands that render no frames, so no farm task can run them.
 const NOT_FRAMES: [&str; 4] = ["farm", "info", "stitch", "demo"];
 
+/// What a file argument of the command is to the farm (OpenJD's dataFlow).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flow {
+    /// Read: an input, a job file.
+    In,
+    /// Written: `-o`.
+    Out,
+}
+
+/// The command every task runs, but for `--frames`.
+pub struct TaskCommand {
+    pub args: Vec<String>,
+    /// The arguments that are file names (absolute), by index in `args`.
+    pub files: Vec<(usize, Flow)>,
+}
+
 /// `command` parsed as exrcomp parses it, its file names made absolute
 /// against `cwd` (a task runs in a session folder of the farm's), and run as
 /// a dry run over all `frames`, so that no template is written for a command
 /// that would fail on every task (a typo, a missing input, an output that is
 /// an input). The arguments every task runs, but for `--frames`: with
 /// `--resume` and `--quiet` once.
-pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Vec<String>> {
+pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<TaskCommand> {
     if command
         .iter()
         .any(|a| a == "--frames" || a.starts_with("--frames="))
@@ -84,16 +100,26 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Vec<
     let definition = definition
         .find_subcommand(name)
         .expect("the parsed subcommand exists");
+    let mut files = Vec::new();
     for arg in definition.get_arguments() {
         if arg.get_value_hint() != ValueHint::FilePath {
             continue;
         }
+        let flow = match arg.get_id().as_str() {
+            "output" => Flow::Out,
+            _ => Flow::In,
+        };
         for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            if let Some(path) = args.get_mut(at).filter(|p| Path::new(p).is_relative()) {
+            let Some(path) = args.get_mut(at) else {
+                continue;
+            };
+            if Path::new(path).is_relative() {
                 *path = cwd.join(&*path).to_string_lossy().into_owned();
             }
+            files.push((at, flow));
         }
     }
+    files.sort_by_key(|&(at, _)| at);
     for flag in ["resume", "quiet"] {
         if sub.try_get_one::<bool>(flag).ok().flatten() != Some(&true) {
             args.push(format!("--{flag}"));
@@ -102,7 +128,7 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Vec<
     let check = argv(&args).chain(["--frames".into(), frames.into(), "--dry-run".into()]);
     let cli = Cli::try_parse_from(check).map_err(|e| Error::usage(e.to_string()))?;
     crate::commands::run(cli.command)?;
-    Ok(args)
+    Ok(TaskCommand { args, files })
 }
 
 /// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that
@@ -180,24 +206,62 @@ impl Tasks {
     }
 }
 
-/// An Open Job Description job template (specification 2023-09): one step
-/// whose tasks are the frame chunks. An argument that holds `{{` goes
-/// through a STRING job parameter, whose value is not a format string.
-pub fn openjd_template(exrcomp: &Path, command: &[String], tasks: &Tasks) -> String {
+/// An Open Job Description job (specification 2023-09): its template and
+/// the values of its job parameters.
+pub struct OpenJdJob {
+    pub template: String,
+    /// `{"NAME": "VALUE"}`, as `openjd run -p file://FILE` and render
+    /// managers take job parameters.
+    pub values: String,
+}
+
+/// An Open Job Description job template: one step whose tasks are the frame
+/// chunks. The executable and every file argument are PATH job parameters
+/// (`Exrcomp`, `Input1`..., `Output`), which a render manager's path mapping
+/// rewrites for the worker; OpenJD allows a PATH parameter no absolute
+/// default, so their values go in `values`. An argument that holds `{{` goes
+/// through a STRING job parameter, whose value is not a format string. With
+/// scheduler chunking, `Frames` and `ChunkSize` are job parameters too, the
+/// given values their defaults.
+pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> OpenJdJob {
+    let command = &task.args;
     let name = format!("exrcomp {}", command.first().map_or("", String::as_str));
     let mut parameters = Vec::new();
+    let mut values = serde_json::Map::new();
+    // Every path is a FILE: a sequence's pattern names files.
+    let mut path = |parameters: &mut Vec<String>, name: String, value: &str, flow: &str| {
+        parameters.push(format!(
+            "- name: {name}\n\x20 type: PATH\n\x20 objectType: FILE\n\x20 dataFlow: {flow}\n"
+        ));
+        values.insert(name.clone(), value.into());
+        quote(&format!("{{{{Param.{name}}}}}"))
+    };
+    let executable = path(
+        &mut parameters,
+        "Exrcomp".into(),
+        &exrcomp.to_string_lossy(),
+        "NONE",
+    );
     let mut args = Vec::new();
+    let mut inputs = 0;
     for (i, arg) in command.iter().enumerate() {
-        if arg.contains("{{") {
-            let name = format!("Arg{i}");
-            args.push(quote(&format!("{{{{Param.{name}}}}}")));
-            parameters.push(format!(
-                "- name: {name}\n\x20 type: STRING\n\x20 default: {}\n",
-                quote(arg)
-            ));
-        } else {
-            args.push(quote(arg));
-        }
+        let file = task.files.iter().find(|(at, _)| *at == i).map(|f| f.1);
+        args.push(match file {
+            Some(Flow::Out) => path(&mut parameters, "Output".into(), arg, "OUT"),
+            Some(Flow::In) => {
+                inputs += 1;
+                path(&mut parameters, format!("Input{inputs}"), arg, "IN")
+            }
+            None if arg.contains("{{") => {
+                let name = format!("Arg{i}");
+                parameters.push(format!(
+                    "- name: {name}\n\x20 type: STRING\n\x20 default: {}\n",
+                    quote(arg)
+                ));
+                quote(&format!("{{{{Param.{name}}}}}"))
+            }
+            None => quote(arg),
+        });
     }
     args.extend(["--frames", "{{Task.Param.Frames}}"].map(quote));
     let (extensions, task_parameter) = match tasks {
@@ -217,27 +281,35 @@ pub fn openjd_template(exrcomp: &Path, command: &[String], tasks: &Tasks) -> Str
             chunk,
             contiguous,
             target_seconds,
-        } => (
-            "extensions: [TASK_CHUNKING]\n".to_string(),
-            format!(
-                "\x20     type: CHUNK[INT]\n\x20     range: {}\n\x20     chunks:\n\
-                 \x20       defaultTaskCount: {chunk}\n\x20       rangeConstraint: {}\n{}",
-                quote(frames),
-                if *contiguous {
-                    "CONTIGUOUS"
-                } else {
-                    "NONCONTIGUOUS"
-                },
-                target_seconds.map_or(String::new(), |t| {
-                    format!("\x20       targetRuntimeSeconds: {t}\n")
-                }),
-            ),
-        ),
+        } => {
+            parameters.push(format!(
+                "- name: Frames\n\x20 type: STRING\n\x20 default: {}\n\
+                 - name: ChunkSize\n\x20 type: INT\n\x20 default: {chunk}\n\x20 minValue: 1\n",
+                quote(frames)
+            ));
+            (
+                "extensions: [TASK_CHUNKING]\n".to_string(),
+                format!(
+                    "\x20     type: CHUNK[INT]\n\x20     range: \"{{{{Param.Frames}}}}\"\n\
+                     \x20     chunks:\n\x20       defaultTaskCount: \"{{{{Param.ChunkSize}}}}\"\n\
+                     \x20       rangeConstraint: {}\n{}",
+                    if *contiguous {
+                        "CONTIGUOUS"
+                    } else {
+                        "NONCONTIGUOUS"
+                    },
+                    target_seconds.map_or(String::new(), |t| {
+                        format!("\x20       targetRuntimeSeconds: {t}\n")
+                    }),
+                ),
+            )
+        }
     };
-    format!(
+    let template = format!(
         "specificationVersion: jobtemplate-2023-09\n\
          {extensions}\
          name: {name}\n\
+         parameterDefinitions:\n\
          {parameters}\
          steps:\n\
          - name: exrcomp\n\
@@ -248,16 +320,21 @@ pub fn openjd_template(exrcomp: &Path, command: &[String], tasks: &Tasks) -> Str
          \x20 script:\n\
          \x20   actions:\n\
          \x20     onRun:\n\
-         \x20       command: {command}\n\
+         \x20       command: {executable}\n\
          \x20       args: [{args}]\n",
         name = quote(&name),
-        parameters = match parameters.is_empty() {
-            true => String::new(),
-            false => format!("parameterDefinitions:\n{}", parameters.concat()),
-        },
-        command = quote(&exrcomp.to_string_lossy()),
+        parameters = parameters.concat(),
         args = args.join(", "),
-    )
+    );
+    let values = serde_json::to_string_pretty(&values).expect("JSON values serialise") + "\n";
+    OpenJdJob { template, values }
+}
+
+/// Where an OpenJD job's parameter values go: beside its template, `JOB.yaml`
+/// giving `JOB.params.json`.
+pub fn values_path(template: &Path) -> PathBuf {
+    let stem = template.file_stem().unwrap_or_default().to_string_lossy();
+    template.with_file_name(format!("{stem}.params.json"))
 }
 
 /// Writes `text` to `path` under a temporary name, renamed when complete.
@@ -321,4 +398,45 @@ pub fn opencue_outline(
 pub fn this_exrcomp() -> Result<PathBuf> {
     std::env::current_exe()
         .map_err(|e| Error::internal(format!("cannot find exrcomp's own path: {e}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn files_are_path_parameters_and_braces_elsewhere_go_through_a_string() {
+        let task = TaskCommand {
+            args: [
+                "over",
+                "/s/a{{x}}.exr",
+                "--layer",
+                "l{{y}}",
+                "-o",
+                "/s/o.exr",
+            ]
+            .map(String::from)
+            .to_vec(),
+            files: vec![(1, Flow::In), (5, Flow::Out)],
+        };
+        let tasks = Tasks::new("1-4", 2, false, None).unwrap();
+        let job = openjd_template(Path::new("/bin/exrcomp"), &task, &tasks);
+        let args = r#"args: ["over", "{{Param.Input1}}", "--layer", "{{Param.Arg3}}", "-o", "{{Param.Output}}", "--frames", "{{Task.Param.Frames}}"]"#;
+        assert!(job.template.contains(args), "{}", job.template);
+        assert!(job
+            .template
+            .contains("- name: Arg3\n  type: STRING\n  default: \"l{{y}}\"\n"));
+        assert!(job
+            .template
+            .contains("- name: Output\n  type: PATH\n  objectType: FILE\n  dataFlow: OUT\n"));
+        let values: serde_json::Value = serde_json::from_str(&job.values).unwrap();
+        assert_eq!(
+            values,
+            serde_json::json!({"Exrcomp": "/bin/exrcomp", "Input1": "/s/a{{x}}.exr", "Output": "/s/o.exr"})
+        );
+        assert_eq!(
+            values_path(Path::new("a/job.yaml")),
+            Path::new("a/job.params.json")
+        );
+    }
 }

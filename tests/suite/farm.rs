@@ -39,9 +39,18 @@ fn plates(d: &Path) {
     }
 }
 
+/// `openjd ARGS` in `cwd`; a `run` gets the job's parameter values, which
+/// exrcomp writes beside the template (`JOB.params.json`).
 fn openjd(openjd: &Path, args: &[&str], cwd: &Path) {
+    let mut args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
+    if args[0] == "run" {
+        args.extend([
+            "-p".to_string(),
+            format!("file://{}", s(&values(&cwd.join(&args[1])))),
+        ]);
+    }
     let out = Command::new(openjd)
-        .args(args)
+        .args(&args)
         .current_dir(cwd)
         .output()
         .unwrap();
@@ -51,6 +60,12 @@ fn openjd(openjd: &Path, args: &[&str], cwd: &Path) {
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// The parameter values of the OpenJD job `template`.
+fn values(template: &Path) -> std::path::PathBuf {
+    let stem = template.file_stem().unwrap().to_string_lossy();
+    template.with_file_name(format!("{stem}.params.json"))
 }
 
 #[test]
@@ -129,6 +144,77 @@ fn an_openjd_template_checks_runs_and_matches_a_local_run_byte_for_byte() {
         !p("farm/.comp.0005.exr.exrcomp-999999.tmp").exists(),
         "the killed run's temporary stayed"
     );
+}
+
+#[test]
+fn path_mapping_moves_a_whole_shot_and_its_outputs_land_there_byte_for_byte() {
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let shot = dir.path().join("shot");
+    std::fs::create_dir(&shot).unwrap();
+    plates(&shot);
+    let make = exrcomp()
+        .args([
+            "farm", "openjd", "--frames", "1-7", "--chunk", "4", "-o", "job.yaml", "--",
+        ])
+        .args([
+            "over",
+            "fg.####.exr",
+            "bg.####.exr",
+            "-o",
+            "farm/comp.####.exr",
+        ])
+        .current_dir(&shot)
+        .output()
+        .unwrap();
+    assert!(make.status.success(), "{}", stderr(&make));
+    let template = std::fs::read_to_string(shot.join("job.yaml")).unwrap();
+    for parameter in ["Exrcomp", "Input1", "Input2", "Output"] {
+        assert!(
+            template.contains(&format!("{{{{Param.{parameter}}}}}")),
+            "{template}"
+        );
+    }
+    assert!(
+        !template.contains(&s(&shot)),
+        "a path is written into the template: {template}"
+    );
+    // The shot moves to another folder (another mount on the worker): the
+    // rule maps every path parameter, and nothing lands in the old place.
+    let moved = dir.path().join("moved");
+    std::fs::rename(&shot, &moved).unwrap();
+    let rules = serde_json::json!({
+        "version": "pathmapping-1.0",
+        "path_mapping_rules": [{
+            "source_path_format": "POSIX",
+            "source_path": s(&shot),
+            "destination_path": s(&moved),
+        }],
+    });
+    openjd(
+        &openjd_cli,
+        &[
+            "run",
+            "job.yaml",
+            "--step",
+            "exrcomp",
+            "--path-mapping-rules",
+            &rules.to_string(),
+        ],
+        &moved,
+    );
+    assert!(!shot.exists(), "an output was written at the unmapped path");
+    local_over(&moved);
+    for frame in 1..=7 {
+        let name = format!("comp.{frame:04}.exr");
+        assert_eq!(
+            std::fs::read(moved.join("farm").join(&name)).unwrap(),
+            std::fs::read(moved.join("local").join(&name)).unwrap(),
+            "{name}"
+        );
+    }
 }
 
 #[test]
@@ -415,10 +501,11 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         &over,
     );
     let template = std::fs::read_to_string(d.join("jobs/a/job.yaml")).unwrap();
+    let given = std::fs::read_to_string(values(&d.join("jobs/a/job.yaml"))).unwrap();
     let output = d.join("jobs/out/c.####.exr");
     assert!(
-        template.contains(&format!("\"{}\"", s(&output))),
-        "{template}"
+        given.contains(&format!("\"Output\": \"{}\"", s(&output))),
+        "{given}"
     );
     assert_eq!(template.matches("--resume").count(), 1, "{template}");
     assert_eq!(
@@ -498,13 +585,17 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
     for part in [
         "extensions: [TASK_CHUNKING]",
         "type: CHUNK[INT]",
-        r#"range: "1-2000""#,
+        r#"range: "{{Param.Frames}}""#,
+        r#"default: "1-2000""#,
+        r#"defaultTaskCount: "{{Param.ChunkSize}}""#,
         "rangeConstraint: CONTIGUOUS",
         "targetRuntimeSeconds: 60",
-        "{{Param.Arg1}}",
+        "{{Param.Input1}}",
     ] {
         assert!(template.contains(part), "{part} not in {template}");
     }
+    let given = std::fs::read_to_string(values(&d.join("c.yaml"))).unwrap();
+    assert!(given.contains("f{{x}}.####.exr"), "{given}");
     openjd(&openjd_cli, &["check", "c.yaml"], d);
     openjd(
         &openjd_cli,
