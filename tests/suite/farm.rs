@@ -178,7 +178,7 @@ fn path_mapping_moves_a_whole_shot_and_its_outputs_land_there_byte_for_byte() {
         );
     }
     assert!(
-        !template.contains(&s(&shot)),
+        !template.contains(s(&shot)),
         "a path is written into the template: {template}"
     );
     // The shot moves to another folder (another mount on the worker): the
