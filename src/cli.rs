@@ -7,6 +7,23 @@ use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand,
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
+/// `clap::ValueEnum` for a domain type, here so that the type itself needs
+/// no clap: each variant's name on the command line and its help.
+macro_rules! value_enum {
+    ($ty:ty { $($variant:ident => $name:literal: $help:literal),* $(,)? }) => {
+        impl clap::ValueEnum for $ty {
+            fn value_variants<'a>() -> &'a [Self] {
+                &[$(<$ty>::$variant),*]
+            }
+            fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+                Some(match self {
+                    $(<$ty>::$variant => clap::builder::PossibleValue::new($name).help($help)),*
+                })
+            }
+        }
+    };
+}
+
 #[derive(Parser)]
 #[command(
     name = "exrcomp",
@@ -106,6 +123,10 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Time a job over several runs, each writing afresh: wall and CPU time,
+    /// frames/s, bytes/s, peak memory, the machine; compare with a baseline
+    /// record (specs/bench.md).
+    Bench(BenchArgs),
     /// Write synthetic test plates (a grainy background or a moving foreground).
     Generate {
         /// Output file or sequence.
@@ -127,6 +148,79 @@ pub enum Command {
         run: RunArgs,
     },
 }
+
+#[derive(Args)]
+pub struct BenchArgs {
+    /// Counted runs.
+    #[arg(long, default_value_t = 5, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=1000))]
+    pub runs: usize,
+    /// Runs before them, not counted.
+    #[arg(long, default_value_t = 1, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(0..=100))]
+    pub warmup: usize,
+    /// Keep the runs' outputs (their folder is printed) instead of removing them.
+    #[arg(long)]
+    pub keep: bool,
+    /// Drop the inputs from the page cache before each run (measures the storage).
+    #[arg(long)]
+    pub cold: bool,
+    /// Time the standard workload (generated once into the cache folder):
+    /// transcode, over, a stack of 4, over + blur.
+    #[arg(long)]
+    pub standard: bool,
+    /// The standard workload's plate size.
+    #[arg(long, value_enum, default_value = "1080p")]
+    pub size: Size,
+    /// The standard workload's frames per job.
+    #[arg(long, default_value_t = 4, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=1000))]
+    pub frames: usize,
+    /// Where the standard workload's plates are kept (default: ~/.cache/exrcomp/bench).
+    #[arg(long, value_hint = ValueHint::DirPath)]
+    pub cache: Option<PathBuf>,
+    /// A command's name in the record.
+    #[arg(long, default_value = "job")]
+    pub name: String,
+    /// Write the record here (JSON, specs/bench.md).
+    #[arg(long, value_hint = ValueHint::FilePath)]
+    pub json: Option<PathBuf>,
+    /// An earlier record: exit 1 if a job is slower beyond the tolerance and the noise.
+    #[arg(long, value_hint = ValueHint::FilePath)]
+    pub baseline: Option<PathBuf>,
+    /// Percent of the baseline's median a job may be slower by.
+    #[arg(long, default_value_t = 5.0, value_parser = parse_tolerance)]
+    pub tolerance: f64,
+    /// Draw the runs per job (and the baseline's) to this SVG file.
+    #[arg(long, value_hint = ValueHint::FilePath)]
+    pub report: Option<PathBuf>,
+    /// Worker threads of the timed runs.
+    #[arg(skip)]
+    pub threads: Option<usize>,
+    /// The exrcomp command to time (after `--`), or a job file.
+    #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+    pub command: Vec<String>,
+}
+
+fn parse_tolerance(text: &str) -> Result<f64, String> {
+    match text.trim_end_matches('%').parse::<f64>() {
+        Ok(t) if (0.0..=1000.0).contains(&t) => Ok(t),
+        _ => Err(format!(
+            "expected a percentage from 0 to 1000, not '{text}'"
+        )),
+    }
+}
+
+/// The standard workload's sizes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Size {
+    Hd,
+    Uhd,
+    Eight,
+}
+
+value_enum!(Size {
+    Hd => "1080p": "1920x1080",
+    Uhd => "4k": "3840x2160",
+    Eight => "8k": "7680x4320",
+});
 
 #[derive(Subcommand)]
 pub enum Farm {
@@ -427,23 +521,6 @@ impl Subcommand for Invocation {
     fn has_subcommand(name: &str) -> bool {
         crate::ops::find(name).is_some()
     }
-}
-
-/// `clap::ValueEnum` for a domain type, here so that the type itself needs
-/// no clap: each variant's name on the command line and its help.
-macro_rules! value_enum {
-    ($ty:ty { $($variant:ident => $name:literal: $help:literal),* $(,)? }) => {
-        impl clap::ValueEnum for $ty {
-            fn value_variants<'a>() -> &'a [Self] {
-                &[$(<$ty>::$variant),*]
-            }
-            fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-                Some(match self {
-                    $(<$ty>::$variant => clap::builder::PossibleValue::new($name).help($help)),*
-                })
-            }
-        }
-    };
 }
 
 value_enum!(crate::engine::sources::MissingPolicy {

@@ -129,6 +129,7 @@ pub fn run(command: Command) -> Result<()> {
             run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files, json } => info(&files, json),
+        Command::Bench(args) => crate::bench::bench(&args),
         Command::Demo {
             dir,
             length,
@@ -435,6 +436,7 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
         return Ok(());
     }
     let (report, summary) = run_with_progress(job, label, run, summary)?;
+    planted_delay();
     report.finish(&summary);
     if summary.interrupted {
         return Err(Error::new(
@@ -454,6 +456,18 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
         ));
     }
     Ok(())
+}
+
+/// Test builds only: `EXRCOMP_TEST_DELAY=SECONDS` makes a run that much
+/// slower, a planted regression for `bench --baseline`'s tests.
+fn planted_delay() {
+    #[cfg(debug_assertions)]
+    if let Some(s) = std::env::var("EXRCOMP_TEST_DELAY")
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+    {
+        std::thread::sleep(std::time::Duration::from_secs_f64(s.clamp(0.0, 60.0)));
+    }
 }
 
 fn run_with_progress(

@@ -17,13 +17,15 @@ pub enum Kind {
     Stopped,
     /// Ctrl-C or SIGTERM.
     Interrupted,
+    /// `bench --baseline`: a job slower than the baseline beyond its noise.
+    Regression,
 }
 
 impl Kind {
     /// Exit codes, as documented in the README.
     pub fn exit_code(self) -> i32 {
         match self {
-            Kind::Internal | Kind::Stopped => 1,
+            Kind::Internal | Kind::Stopped | Kind::Regression => 1,
             Kind::Usage => 2,
             Kind::Input => 3,
             Kind::Output => 4,

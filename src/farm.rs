@@ -62,23 +62,11 @@ pub struct TaskCommand {
     pub files: Vec<(usize, Flow)>,
 }
 
-/// `command` parsed as exrcomp parses it, its file names made absolute
-/// against `cwd` (a task runs in a session folder of the farm's), and run as
-/// a dry run over all `frames`, so that no template is written for a command
-/// that would fail on every task (a typo, a missing input, an output that is
-/// an input). The arguments every task runs, but for `--frames`: with
-/// `--resume` and `--quiet` once.
-pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<TaskCommand> {
-    if command
-        .iter()
-        .any(|a| a == "--frames" || a.starts_with("--frames="))
-    {
-        return Err(Error::usage(
-            "give --frames to `exrcomp farm`, not to the command: each task gets its chunk",
-        ));
-    }
-    let mut args = split_joined_values(command);
-    let argv = |args: &[String]| std::iter::once("exrcomp".to_string()).chain(args.to_vec());
+/// `command` parsed as exrcomp parses it: its arguments (joined values
+/// split, `--output=F` as `--output F`), the file arguments among them, the
+/// subcommand's name and its matches.
+pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::ArgMatches)> {
+    let args = split_joined_values(command);
     let matches = Cli::command()
         .try_get_matches_from(argv(&args))
         .map_err(|e| {
@@ -90,11 +78,6 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Task
             ))
         })?;
     let (name, sub) = matches.subcommand().expect("a subcommand is required");
-    if NOT_FRAMES.contains(&name) {
-        return Err(Error::usage(format!(
-            "`{name}` renders no frames: a farm job runs a command that writes frames (over, blur, run, transcode...)"
-        )));
-    }
     // A subcommand's indices count from its own name, which is args[0].
     let definition = Cli::command();
     let definition = definition
@@ -110,25 +93,58 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Task
             _ => Flow::In,
         };
         for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            let Some(path) = args.get_mut(at) else {
-                continue;
-            };
-            if Path::new(path).is_relative() {
-                *path = cwd.join(&*path).to_string_lossy().into_owned();
+            // A value clap places outside the arguments is left alone.
+            if at < args.len() {
+                files.push((at, flow));
             }
-            files.push((at, flow));
         }
     }
     files.sort_by_key(|&(at, _)| at);
-    for flag in ["resume", "quiet"] {
-        if sub.try_get_one::<bool>(flag).ok().flatten() != Some(&true) {
-            args.push(format!("--{flag}"));
+    Ok((TaskCommand { args, files }, name.to_string(), sub.clone()))
+}
+
+fn argv(args: &[String]) -> impl Iterator<Item = String> + '_ {
+    std::iter::once("exrcomp".to_string()).chain(args.iter().cloned())
+}
+
+/// `command` parsed as exrcomp parses it, its file names made absolute
+/// against `cwd` (a task runs in a session folder of the farm's), and run as
+/// a dry run over all `frames`, so that no template is written for a command
+/// that would fail on every task (a typo, a missing input, an output that is
+/// an input). The arguments every task runs, but for `--frames`: with
+/// `--resume` and `--quiet` once.
+pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<TaskCommand> {
+    if command
+        .iter()
+        .any(|a| a == "--frames" || a.starts_with("--frames="))
+    {
+        return Err(Error::usage(
+            "give --frames to `exrcomp farm`, not to the command: each task gets its chunk",
+        ));
+    }
+    let (mut task, name, sub) = parse_command(command)?;
+    if NOT_FRAMES.contains(&name.as_str()) {
+        return Err(Error::usage(format!(
+            "`{name}` renders no frames: a farm job runs a command that writes frames (over, blur, run, transcode...)"
+        )));
+    }
+    for &(at, _) in &task.files {
+        let path = &mut task.args[at];
+        if Path::new(path).is_relative() {
+            *path = cwd.join(&*path).to_string_lossy().into_owned();
         }
     }
-    let check = argv(&args).chain(["--frames".into(), frames.into(), "--dry-run".into()]);
+    for flag in ["resume", "quiet"] {
+        if sub.try_get_one::<bool>(flag).ok().flatten() != Some(&true) {
+            task.args.push(format!("--{flag}"));
+        }
+    }
+    let check = argv(&task.args)
+        .chain(["--frames".into(), frames.into(), "--dry-run".into()])
+        .collect::<Vec<_>>();
     let cli = Cli::try_parse_from(check).map_err(|e| Error::usage(e.to_string()))?;
     crate::commands::run(cli.command)?;
-    Ok(TaskCommand { args, files })
+    Ok(task)
 }
 
 /// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that

@@ -1,5 +1,7 @@
 //! exrcomp: a streaming OpenEXR sequence compositor.
 
+pub mod bench;
+pub mod bench_chart;
 pub mod cli;
 pub mod commands;
 pub mod engine;

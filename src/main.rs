@@ -3,7 +3,11 @@ use exrcomp::cli::Cli;
 
 fn main() {
     keep_freed_memory();
-    let cli = Cli::parse();
+    let mut cli = Cli::parse();
+    // The runs that bench times get the threads it was given.
+    if let exrcomp::cli::Command::Bench(bench) = &mut cli.command {
+        bench.threads = cli.threads;
+    }
     exrcomp::engine::interrupt::install();
     if let Some(threads) = cli.threads {
         // Only fails if the pool exists already, which it cannot here.

@@ -3,6 +3,7 @@
 //! memory beside it in src/.
 
 mod attributes;
+mod bench;
 mod blur;
 mod common;
 mod damaged_corpus;
