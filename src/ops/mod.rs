@@ -5,6 +5,7 @@ pub mod blur;
 pub mod declare;
 pub mod defocus;
 pub mod diffrender;
+pub mod grade;
 pub mod layers;
 pub mod matte;
 pub mod merge;
@@ -35,6 +36,9 @@ pub const ALL: &[&Operation] = &[
     &matte::TRIANGULATE,
     &morphology::ERODE,
     &morphology::DILATE,
+    &grade::GRADE,
+    &grade::EXPOSURE,
+    &grade::SATURATION,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

@@ -10,6 +10,7 @@ mod deep;
 mod depth_and_motion;
 mod diffrender_and_zmerge;
 mod farm;
+mod grades;
 mod hostile;
 mod job_files;
 mod layers_and_parts;
