@@ -11,6 +11,7 @@ pub mod matte;
 pub mod merge;
 pub mod morphology;
 pub mod premult;
+pub mod shuffle;
 pub mod stereo;
 pub mod vblur;
 pub mod zmerge;
@@ -39,6 +40,8 @@ pub const ALL: &[&Operation] = &[
     &grade::GRADE,
     &grade::EXPOSURE,
     &grade::SATURATION,
+    &shuffle::SHUFFLE,
+    &shuffle::COPY,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

@@ -24,6 +24,7 @@ mod passthrough;
 mod peers;
 mod real_files;
 mod sequences_and_errors;
+mod shuffle;
 mod stack;
 mod tiled;
 mod tiled_output;
