@@ -441,6 +441,8 @@ fn subcommand(op: &'static Operation) -> clap::Command {
             let check = param.check;
             arg = arg
                 .required(param.required())
+                // Negative lists (`--lift -0.1,0,0`) are values, not options.
+                .allow_hyphen_values(true)
                 .value_parser(move |text: &str| check(text).map(|()| text.to_string()));
             if let Some(default) = param.default {
                 arg = arg.default_value(default);

@@ -37,6 +37,14 @@ impl Bound {
         let value = text.trim().parse::<T>().map_err(|_| self.refusal(text))?;
         self.check(value).map_err(|_| self.refusal(text))
     }
+
+    /// Parses and checks each value of a comma-separated list (`R,G,B`).
+    pub fn parse_list<T: FromStr + Into<f64> + Copy + Display>(
+        &self,
+        text: &str,
+    ) -> Result<Vec<T>, String> {
+        text.split(',').map(|v| self.parse(v)).collect()
+    }
 }
 
 const fn bound(name: &'static str, min: f64, max: f64) -> Bound {
@@ -60,6 +68,18 @@ pub const BALANCE: Bound = bound("balance", 0.0, 1.0);
 pub const CLIP: Bound = bound("clip", 0.0, 1.0);
 pub const THRESHOLD: Bound = bound("threshold", 0.0, 1e6);
 pub const SOFTNESS: Bound = bound("softness", 0.0, 1e6);
+/// Grade's points and levels: any finite value means something.
+pub const BLACKPOINT: Bound = bound("blackpoint", -1e6, 1e6);
+pub const WHITEPOINT: Bound = bound("whitepoint", -1e6, 1e6);
+pub const LIFT: Bound = bound("lift", -1e6, 1e6);
+pub const GRADE_GAIN: Bound = bound("gain", -1e6, 1e6);
+pub const MULTIPLY: Bound = bound("multiply", -1e6, 1e6);
+pub const OFFSET: Bound = bound("offset", -1e6, 1e6);
+/// 0 (or below, in Nuke) makes the gamma a step.
+pub const GAMMA: Bound = bound("gamma", 0.0, 1e3);
+/// 2^64 is still a finite f32.
+pub const STOPS: Bound = bound("stops", -64.0, 64.0);
+pub const SATURATION_FACTOR: Bound = bound("saturation", -1e3, 1e3);
 /// DWAA/DWAB's `dwaCompressionLevel`: its quantisation step is the level /
 /// 100000 of a JPEG table step, so 100000 already flattens every block.
 pub const DWA_LEVEL: Bound = bound("dwa_level", 0.0, 1e5);

@@ -121,10 +121,8 @@ impl Value for Screen {
             "blue" => return Ok(Screen([0.0, 0.0, 1.0])),
             _ => {}
         }
-        let values: Vec<f32> = text
-            .split(',')
-            .map(|v| SCREEN.parse::<f32>(v))
-            .collect::<Result<_, _>>()
+        let values: Vec<f32> = SCREEN
+            .parse_list(text)
             .map_err(|m| format!("expected green, blue or R,G,B: {m}"))?;
         match values[..] {
             [r, g, b] if r.max(g).max(b) > r.min(g).min(b) => Ok(Screen([r, g, b])),

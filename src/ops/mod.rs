@@ -5,11 +5,13 @@ pub mod blur;
 pub mod declare;
 pub mod defocus;
 pub mod diffrender;
+pub mod grade;
 pub mod layers;
 pub mod matte;
 pub mod merge;
 pub mod morphology;
 pub mod premult;
+pub mod shuffle;
 pub mod stereo;
 #[cfg(test)]
 pub mod testing;
@@ -37,6 +39,11 @@ pub const ALL: &[&Operation] = &[
     &matte::TRIANGULATE,
     &morphology::ERODE,
     &morphology::DILATE,
+    &grade::GRADE,
+    &grade::EXPOSURE,
+    &grade::SATURATION,
+    &shuffle::SHUFFLE,
+    &shuffle::COPY,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {
