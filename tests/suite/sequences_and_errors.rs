@@ -315,7 +315,7 @@ fn usage_errors_exit_2_and_bad_inputs_exit_3() {
             "unknown compression",
         ),
         (
-            vec!["over", s(&none), s(&fg), "-o", s(&single)],
+            vec!["over", s(&none), s(&fg), "-o", s(&seq)],
             3,
             "none.exr",
         ),
