@@ -247,8 +247,9 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(long)]
     pub json: bool,
-    /// Check every frame's inputs and the outputs, print what would be
-    /// written, and write nothing.
+    /// Check every frame's inputs and the outputs, print the files each
+    /// output frame reads and writes (with --json as JSON), decode nothing
+    /// and write nothing.
     #[arg(long)]
     pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a

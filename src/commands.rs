@@ -450,6 +450,7 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
     refuse_overwriting(reads, writes)?;
     if run.dry_run {
         if !run.quiet {
+            print!("{}", dry_run_listing(job, run.json));
             eprintln!(
                 "{label}: would write {} to {}",
                 count(job.frames.len(), "frame"),
@@ -478,6 +479,62 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
         ));
     }
     Ok(())
+}
+
+/// Per output frame, the files each input reads (and why, when a missing
+/// frame was held or made black) and the file written: a line of text, or
+/// with `json` a JSON object, per frame.
+fn dry_run_listing(job: &Job, json: bool) -> String {
+    let mut text = String::new();
+    for sources in &job.frames {
+        let frame = sources.frame;
+        let mut reads = Vec::new();
+        for (i, (input, &source)) in job.inputs.iter().zip(&sources.inputs).enumerate() {
+            let wanted = job.times[i].read(frame).unwrap_or(source.file_frame());
+            let file = input.path(source.file_frame()).display().to_string();
+            let missing = input.path(wanted).display().to_string();
+            reads.push(match source {
+                Source::Frame(f) if f == wanted => (file, "frame", None),
+                Source::Frame(_) => (file, "held", Some(missing)),
+                Source::Black(_) => (file, "black", Some(missing)),
+            });
+            for merged in &job.merged[i] {
+                reads.push((merged.path(frame).display().to_string(), "frame", None));
+            }
+        }
+        let output = job.output.path(frame).display().to_string();
+        let line = match json {
+            true => serde_json::json!({
+                "frame": frame,
+                "reads": reads.iter().map(|(file, source, missing)| {
+                    let mut read = serde_json::json!({"file": file, "source": source});
+                    if let Some(missing) = missing {
+                        read["missing"] = missing.as_str().into();
+                    }
+                    read
+                }).collect::<Vec<_>>(),
+                "output": output,
+            })
+            .to_string(),
+            false => {
+                let reads: Vec<String> = reads
+                    .iter()
+                    .map(|(file, source, missing)| match (source, missing) {
+                        (&"held", Some(missing)) => format!("{file} (held: {missing} is missing)"),
+                        (&"black", Some(missing)) => format!("black ({missing} is missing)"),
+                        _ => file.clone(),
+                    })
+                    .collect();
+                let label = job
+                    .frame_label(frame)
+                    .map_or(String::new(), |f| format!("frame {f}: "));
+                format!("{label}{} -> {output}", reads.join(", "))
+            }
+        };
+        text.push_str(&line);
+        text.push('\n');
+    }
+    text
 }
 
 fn run_with_progress(
