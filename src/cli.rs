@@ -308,6 +308,26 @@ pub struct RunArgs {
     /// output frame, hold the nearest earlier frame, or black.
     #[arg(long, value_enum, default_value = "error")]
     pub missing: crate::engine::sources::MissingPolicy,
+    /// Set an attribute of the output's header: NAME=VALUE, typed as oiiotool
+    /// types it (an integer is an int, another number a float, else a
+    /// string) or as :TYPE says (string, int, float, double, v2i, v2f, v3i,
+    /// v3f, box2i, box2f, m33f, m44f, rational, timecode, keycode; values
+    /// of several numbers separated by commas). Repeatable.
+    #[arg(long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
+    pub attribs: Vec<crate::io::attributes::Attrib>,
+    /// Erase the output header's attributes of this name, or matching this
+    /// glob (`*`, `?`), before --attrib sets any. Repeatable.
+    #[arg(long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
+    pub erase_attribs: Vec<String>,
+    /// Write each frame's timeCode: HH:MM:SS:FF (HH:MM:SS;FF drop-frame) for
+    /// the shot's first frame, or @FRAME's (01:00:00:00@1001), counted at
+    /// the frame rate; or +N / -N to shift the input's own by N frames.
+    #[arg(long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
+    pub timecode: Option<crate::io::timecode::TimecodeSpec>,
+    /// Frame rate, written as framesPerSecond: N, N/D (24000/1001) or an
+    /// NTSC rate as 23.976 (default: the input's).
+    #[arg(long, value_name = "RATE", value_parser = crate::io::attributes::parse_rational)]
+    pub fps: Option<exr::meta::attribute::Rational>,
     /// Skip frames whose output already exists and decodes completely.
     #[arg(long)]
     pub resume: bool,
@@ -321,8 +341,9 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(long)]
     pub json: bool,
-    /// Check every frame's inputs and the outputs, print what would be
-    /// written, and write nothing.
+    /// Check every frame's inputs and the outputs, print the files each
+    /// output frame reads and writes (with --json as JSON), decode nothing
+    /// and write nothing.
     #[arg(long)]
     pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a

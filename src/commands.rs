@@ -9,14 +9,15 @@ use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job, Source};
 use crate::engine::prepass::max_over_rows;
-use crate::engine::sources::resolve;
+use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
 use crate::generate::{PixelType, Plate, PlateKind};
+use crate::io::attributes::Edits;
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
-use crate::io::sequence::{format_frame_list, parse_frame_list, FramePattern};
+use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, FramePattern};
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
@@ -69,6 +70,14 @@ pub fn run(command: Command) -> Result<()> {
                 compression: run.compression.clone().or(plan.compression),
                 all_parts: run.all_parts || plan.all_parts,
                 tile: run.tile.or(plan.tile),
+                attribs: plan.attribs.into_iter().chain(run.attribs).collect(),
+                erase_attribs: plan
+                    .erase_attribs
+                    .into_iter()
+                    .chain(run.erase_attribs)
+                    .collect(),
+                timecode: run.timecode.or(plan.timecode),
+                fps: run.fps.or(plan.fps),
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -231,38 +240,41 @@ fn input_job(
 ) -> Result<(Job, Summary)> {
     let mut inputs = Vec::new();
     let mut parts = Vec::new();
+    let mut times = Vec::new();
     for text in texts {
-        let (path, part) = split_part(text);
-        inputs.push(FramePattern::parse(path)?);
+        let (rest, time) = split_time(text)?;
+        let (path, part) = split_part(rest);
+        let pattern = FramePattern::parse(path)?;
+        times.push(time.pinned(&pattern)?);
+        inputs.push(pattern);
         parts.push(part.map(str::to_string).or_else(|| layers.part.clone()));
     }
     let output = FramePattern::output(output)?;
+    let mut attributes = edits(run)?;
     let frames = match &run.frames {
         Some(text) => parse_frame_list(text)?,
-        // Every frame from the first on disk to the last: a gap between them
-        // is a missing frame like any other, for `--missing` to decide.
-        None if inputs[0].is_sequence() => match inputs[0].frames_on_disk()?[..] {
-            [first, .., last] => (first..=last).collect(),
-            [only] => vec![only],
-            [] => {
-                return Err(Error::new(
-                    Kind::Input,
-                    format!("no frames of {} found", inputs[0].display()),
-                ))
-            }
-        },
-        None => vec![1],
+        None => default_frames(&inputs, &times)?,
     };
+    // A timecode start is the shot's first frame's: the first frame without
+    // --frames, so that each chunk of a farm job counts from the same one.
+    if attributes.needs_anchor() {
+        let first = match &run.frames {
+            Some(_) => default_frames(&inputs, &times)?[0],
+            None => frames[0],
+        };
+        attributes.anchor(first);
+    }
     check_frame_count(&frames, &output)?;
     if run.all_parts {
         check_all_parts(texts, &parts, layers)?;
     }
-    let resolved = resolve(&inputs, &frames, run.missing)?;
+    let resolved = resolve(&inputs, &times, &frames, run.missing)?;
     let luminance = luminance_inputs(&inputs, &parts, layers, &graph, &resolved.frames);
     let graph = luminance_chroma::colour_inputs(graph, &luminance);
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
         inputs,
+        times,
         parts,
         view: layers.view.clone(),
         level: layers.level,
@@ -278,6 +290,7 @@ fn input_job(
         keep_going: run.keep_going,
         rows: run.rows,
         all_parts: run.all_parts,
+        attributes,
     };
     let summary = Summary {
         skipped: resolved.skipped,
@@ -355,8 +368,11 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         ));
     }
     let display = plate.display_window();
+    let mut attributes = edits(run)?;
+    attributes.anchor(frames[0]);
     Ok(Job {
         inputs: Vec::new(),
+        times: Vec::new(),
         merged: Vec::new(),
         parts: Vec::new(),
         view: None,
@@ -383,7 +399,19 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         keep_going: run.keep_going,
         rows: run.rows,
         all_parts: false,
+        attributes,
     })
+}
+
+/// The attribute edits `run` asks for.
+fn edits(run: &RunArgs) -> Result<Edits> {
+    Edits::new(
+        run.erase_attribs.clone(),
+        run.attribs.clone(),
+        run.fps,
+        run.timecode,
+    )
+    .map_err(Error::usage)
 }
 
 fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
@@ -427,6 +455,7 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
     refuse_overwriting(reads, writes)?;
     if run.dry_run {
         if !run.quiet {
+            print!("{}", dry_run_listing(job, run.json));
             eprintln!(
                 "{label}: would write {} to {}",
                 count(job.frames.len(), "frame"),
@@ -468,6 +497,62 @@ fn planted_delay() {
     {
         std::thread::sleep(std::time::Duration::from_secs_f64(s.clamp(0.0, 60.0)));
     }
+}
+
+/// Per output frame, the files each input reads (and why, when a missing
+/// frame was held or made black) and the file written: a line of text, or
+/// with `json` a JSON object, per frame.
+fn dry_run_listing(job: &Job, json: bool) -> String {
+    let mut text = String::new();
+    for sources in &job.frames {
+        let frame = sources.frame;
+        let mut reads = Vec::new();
+        for (i, (input, &source)) in job.inputs.iter().zip(&sources.inputs).enumerate() {
+            let wanted = job.times[i].read(frame).unwrap_or(source.file_frame());
+            let file = input.path(source.file_frame()).display().to_string();
+            let missing = input.path(wanted).display().to_string();
+            reads.push(match source {
+                Source::Frame(f) if f == wanted => (file, "frame", None),
+                Source::Frame(_) => (file, "held", Some(missing)),
+                Source::Black(_) => (file, "black", Some(missing)),
+            });
+            for merged in &job.merged[i] {
+                reads.push((merged.path(frame).display().to_string(), "frame", None));
+            }
+        }
+        let output = job.output.path(frame).display().to_string();
+        let line = match json {
+            true => serde_json::json!({
+                "frame": frame,
+                "reads": reads.iter().map(|(file, source, missing)| {
+                    let mut read = serde_json::json!({"file": file, "source": source});
+                    if let Some(missing) = missing {
+                        read["missing"] = missing.as_str().into();
+                    }
+                    read
+                }).collect::<Vec<_>>(),
+                "output": output,
+            })
+            .to_string(),
+            false => {
+                let reads: Vec<String> = reads
+                    .iter()
+                    .map(|(file, source, missing)| match (source, missing) {
+                        (&"held", Some(missing)) => format!("{file} (held: {missing} is missing)"),
+                        (&"black", Some(missing)) => format!("black ({missing} is missing)"),
+                        _ => file.clone(),
+                    })
+                    .collect();
+                let label = job
+                    .frame_label(frame)
+                    .map_or(String::new(), |f| format!("frame {f}: "));
+                format!("{label}{} -> {output}", reads.join(", "))
+            }
+        };
+        text.push_str(&line);
+        text.push('\n');
+    }
+    text
 }
 
 fn run_with_progress(

@@ -5,9 +5,13 @@
 use crate::cli::parse_tile;
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
+use crate::io::attributes::{parse_attrib, parse_erase, parse_rational, Attrib};
+use crate::io::sequence::{split_time, InputTime};
+use crate::io::timecode::{parse_spec, TimecodeSpec};
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
 use exr::math::Vec2;
+use exr::meta::attribute::Rational;
 use serde::Deserialize;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
@@ -27,13 +31,23 @@ type Table = BTreeMap<Spanned<String>, Spanned<Value>>;
 
 /// The keys every node or kind of node takes besides an operation's own.
 const NODE_KEYS: &[&str] = &["name", "inputs"];
-const READ_KEYS: &[&str] = &["read", "part"];
-const WRITE_KEYS: &[&str] = &["write", "compression", "tile", "all_parts"];
+const READ_KEYS: &[&str] = &["read", "part", "offset", "hold"];
+const WRITE_KEYS: &[&str] = &[
+    "write",
+    "compression",
+    "tile",
+    "all_parts",
+    "attrib",
+    "erase_attrib",
+    "timecode",
+    "fps",
+];
 const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
 
 /// A job file turned into what the engine runs.
 pub struct JobPlan {
-    /// Per read node, in graph order: the file pattern and the part asked for.
+    /// Per read node, in graph order: the file pattern (with its `offset`
+    /// or `hold` as `@TIME`) and the part asked for.
     pub reads: Vec<(String, Option<String>)>,
     pub graph: Graph,
     /// The read whose header the output keeps (following B inputs down).
@@ -45,6 +59,13 @@ pub struct JobPlan {
     /// The write node's tile size (`--tile` wins).
     pub tile: Option<Vec2<usize>>,
     pub frames: Option<String>,
+    /// The write node's `attrib`, `erase_attrib`, `timecode` and `fps`, as
+    /// the options of those names take them (the command line's win, or
+    /// for the lists come after).
+    pub attribs: Vec<Attrib>,
+    pub erase_attribs: Vec<String>,
+    pub timecode: Option<TimecodeSpec>,
+    pub fps: Option<Rational>,
 }
 
 /// A file name in the job as a path: relative ones are relative to the job
@@ -438,7 +459,7 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
                     unreachable!("reads are read nodes")
                 };
                 let part = nodes[r].get("part").map(|v| string(at, v)).transpose()?;
-                Ok((beside(at.path, file), part))
+                Ok((read_file(at, &nodes[r], beside(at.path, file))?, part))
             })
             .collect::<Result<_>>()?,
         header_from: reads.iter().position(|&r| r == source).unwrap_or(0),
@@ -460,7 +481,80 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
             None => None,
         },
         frames,
+        attribs: strings(at, out, "attrib")?
+            .into_iter()
+            .map(|(text, span)| parse_attrib(&text).or_else(|m| at.error(span, m)))
+            .collect::<Result<_>>()?,
+        erase_attribs: strings(at, out, "erase_attrib")?
+            .into_iter()
+            .map(|(text, span)| parse_erase(&text).or_else(|m| at.error(span, m)))
+            .collect::<Result<_>>()?,
+        timecode: match out.get("timecode") {
+            Some(v) => Some(parse_spec(&string(at, v)?).or_else(|m| at.error(v.span(), m))?),
+            None => None,
+        },
+        fps: match out.get("fps") {
+            Some(v) => {
+                let text = as_text(v.get_ref()).or_else(|m| at.error(v.span(), m))?;
+                Some(parse_rational(&text).or_else(|m| at.error(v.span(), m))?)
+            }
+            None => None,
+        },
     })
+}
+
+/// A list of strings under `key` of `node`, each with the list's place.
+fn strings(at: &Source, node: &Node, key: &str) -> Result<Vec<(String, std::ops::Range<usize>)>> {
+    let Some(list) = node.get(key) else {
+        return Ok(Vec::new());
+    };
+    match list.get_ref() {
+        Value::Array(items) if items.iter().all(Value::is_str) => Ok(items
+            .iter()
+            .filter_map(|v| v.as_str())
+            .map(|t| (t.to_string(), list.span()))
+            .collect()),
+        _ => at.error(list.span(), format!("{key} is a list of strings")),
+    }
+}
+
+/// A read node's file with its `offset` or `hold` key as the `@TIME` the
+/// command line writes after a file name (one of the three ways only).
+fn read_file(at: &Source, node: &Node, file: String) -> Result<String> {
+    let time = match (node.get("offset"), node.get("hold")) {
+        (None, None) => return Ok(file),
+        (Some(_), Some(hold)) => {
+            return at.error(hold.span(), "a read takes offset or hold, not both")
+        }
+        (Some(offset), None) => match offset.get_ref().as_integer() {
+            Some(n) => InputTime::parse(&format!("{n:+}")),
+            None => Err("offset is a number of frames (offset = 10)".to_string()),
+        }
+        .or_else(|m| at.error(offset.span(), m))?,
+        (None, Some(hold)) => match hold.get_ref() {
+            Value::Boolean(true) => InputTime::Hold(None),
+            Value::Integer(f) => {
+                InputTime::parse(&f.to_string()).or_else(|m| at.error(hold.span(), m))?
+            }
+            _ => {
+                return at.error(
+                    hold.span(),
+                    "hold is true (the first frame on disk) or a frame number (hold = 1001)",
+                )
+            }
+        },
+    };
+    let key = node
+        .get("offset")
+        .or(node.get("hold"))
+        .expect("one is given");
+    match split_time(&file) {
+        Ok((_, InputTime::Offset(0))) => Ok(format!("{file}{}", time.suffix())),
+        _ => at.error(
+            key.span(),
+            format!("'{file}' gives its frames with @ already: give offset/hold or @, not both"),
+        ),
+    }
 }
 
 /// Op node `node`'s nodes added to `graph` on `inputs`, its input count

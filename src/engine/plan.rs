@@ -4,9 +4,10 @@
 use super::deep_input::DeepInput;
 use super::graph::{Graph, Node};
 use crate::error::{Error, Kind, Result};
+use crate::io::attributes::Edits;
 use crate::io::parts::choose_part;
 use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
-use crate::io::sequence::FramePattern;
+use crate::io::sequence::{FramePattern, InputTime};
 use crate::io::tiles::{self, Level};
 use crate::io::writer::Parts;
 use exr::math::RoundingMode;
@@ -35,6 +36,9 @@ pub const MAX_STRIP_BYTES: usize = 256 << 20;
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
     pub inputs: Vec<FramePattern>,
+    /// Per input, which of its frames each output frame reads (`FILE@+10`);
+    /// `frames` holds the result, missing frames resolved.
+    pub times: Vec<InputTime>,
     /// Per input, the part asked for (`file.exr:PART` or `--part`).
     pub parts: Vec<Option<String>>,
     /// The view asked for: picks the part of that view in multi-part files.
@@ -67,6 +71,8 @@ pub struct Job {
     /// Run the graph on every part of the one input, one after the other,
     /// into the parts of one output (`--all-parts`).
     pub all_parts: bool,
+    /// The user's edits of the output's attributes (`--attrib`, `--timecode`...).
+    pub attributes: Edits,
 }
 
 /// One output frame and, per input, the frame it reads.
@@ -149,9 +155,12 @@ pub struct FramePlan {
     /// The rows computed: the whole output window, or for a band the band
     /// and the halo rows around it, on the output's block grid.
     pub computed: IntegerBounds,
-    /// The input whose other parts the output keeps, copied as they are:
-    /// the header's input when it has several parts.
+    /// The input whose other parts the output keeps, their chunks copied as
+    /// they are: the header's input when it has several parts.
     pub carried: Option<usize>,
+    /// With `carried`, that input's part headers with the user's attribute
+    /// edits (`--attrib`... apply to every part written).
+    pub carried_headers: Vec<Header>,
     /// With `--all-parts`, on the first part's plan: every part's output
     /// header, each part planned and streamed in turn (`plan_parts`).
     pub every_part: Option<Vec<Header>>,
@@ -170,7 +179,7 @@ impl FramePlan {
         }
         match self.carried {
             Some(i) => {
-                let mut headers = self.inputs[i].meta.headers.to_vec();
+                let mut headers = self.carried_headers.clone();
                 headers[self.parts[i]] = self.header.clone();
                 Parts {
                     headers,
@@ -340,7 +349,20 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;
+    let header_file = match job.header_base {
+        HeaderBase::Input(i) => format!(" ({})", inputs[i].path.display()),
+        HeaderBase::New(_) => String::new(),
+    };
+    let edit = |header: &mut Header| {
+        job.attributes
+            .set(header, frame)
+            .map_err(|m| Error::usage(format!("frame {frame}{header_file}: {m}")))
+    };
+    // Erased before the stamp, so that an input's history can be dropped
+    // (as oiiotool's --eraseattrib does), then set over it.
+    job.attributes.erase(&mut header);
     super::provenance::stamp(&mut header);
+    edit(&mut header)?;
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
@@ -366,6 +388,19 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             Some(i)
         }
         _ => None,
+    };
+    let carried_headers = match carried {
+        Some(i) => inputs[i]
+            .meta
+            .headers
+            .iter()
+            .map(|part| {
+                let mut part = part.clone();
+                job.attributes.carry(&mut part, &header);
+                part
+            })
+            .collect(),
+        None => Vec::new(),
     };
     if let (Some(_), Some(_)) = (job.tile, job.rows) {
         return Err(Error::usage(
@@ -497,6 +532,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         strip_rows: blocks * lines,
         computed,
         carried,
+        carried_headers,
         every_part: None,
     })
 }

@@ -3,7 +3,7 @@
 
 use super::plan::{FrameSources, Source};
 use crate::error::{Error, Kind, Result};
-use crate::io::sequence::{format_frame_list, FramePattern};
+use crate::io::sequence::{format_frame_list, FramePattern, InputTime};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MissingPolicy {
@@ -27,7 +27,15 @@ pub struct Resolved {
     pub replaced: Vec<String>,
 }
 
-pub fn resolve(inputs: &[FramePattern], frames: &[i64], policy: MissingPolicy) -> Result<Resolved> {
+/// Per output frame in `frames`, the frame each input reads: the one its
+/// time gives (`times`, `FILE@+10`), else what `policy` makes of a missing
+/// one.
+pub fn resolve(
+    inputs: &[FramePattern],
+    times: &[InputTime],
+    frames: &[i64],
+    policy: MissingPolicy,
+) -> Result<Resolved> {
     let mut resolved = Resolved {
         frames: frames
             .iter()
@@ -39,19 +47,28 @@ pub fn resolve(inputs: &[FramePattern], frames: &[i64], policy: MissingPolicy) -
         skipped: Vec::new(),
         replaced: Vec::new(),
     };
-    for input in inputs {
-        let missing: Vec<i64> = frames
+    for (input, &time) in inputs.iter().zip(times) {
+        let name = format!("{}{}", input.display(), time.suffix());
+        let wanted: Vec<i64> = frames
             .iter()
-            .copied()
-            .filter(|&f| !input.path(f).exists())
-            .collect();
+            .map(|&f| time.read(f))
+            .collect::<Result<_>>()?;
+        // Output frames whose input frame is missing, and those input frames.
+        let (missing_out, missing): (Vec<i64>, Vec<i64>) = frames
+            .iter()
+            .zip(&wanted)
+            .filter(|(_, &w)| !input.path(w).exists())
+            .map(|(&f, &w)| (f, w))
+            .unzip();
         if missing.is_empty() {
-            resolved
-                .frames
-                .iter_mut()
-                .for_each(|f| f.inputs.push(Source::Frame(f.frame)));
+            for (f, &w) in resolved.frames.iter_mut().zip(&wanted) {
+                f.inputs.push(Source::Frame(w));
+            }
             continue;
         }
+        let mut missing = missing;
+        missing.sort_unstable();
+        missing.dedup();
         let on_disk = if input.is_sequence() {
             input.frames_on_disk()?
         } else {
@@ -62,19 +79,22 @@ pub fn resolve(inputs: &[FramePattern], frames: &[i64], policy: MissingPolicy) -
                 "no such file".to_string()
             } else if on_disk.is_empty() {
                 "no frames on disk".to_string()
+            } else if time != InputTime::default() {
+                format!(
+                    "missing frames {} (read for output frames {})",
+                    format_frame_list(&missing),
+                    format_frame_list(&missing_out)
+                )
             } else {
                 format!("missing frames {}", format_frame_list(&missing))
             };
-            return Err(Error::new(
-                Kind::Input,
-                format!("{}: {what}", input.display()),
-            ));
+            return Err(Error::new(Kind::Input, format!("{name}: {what}")));
         }
-        for f in resolved.frames.iter_mut() {
-            let source = if !missing.contains(&f.frame) {
-                Source::Frame(f.frame)
+        for (f, &w) in resolved.frames.iter_mut().zip(&wanted) {
+            let source = if missing.binary_search(&w).is_err() {
+                Source::Frame(w)
             } else {
-                let near = nearest(&on_disk, f.frame);
+                let near = nearest(&on_disk, w);
                 match policy {
                     MissingPolicy::Black => Source::Black(near),
                     _ => Source::Frame(near),
@@ -83,15 +103,13 @@ pub fn resolve(inputs: &[FramePattern], frames: &[i64], policy: MissingPolicy) -
             f.inputs.push(source);
         }
         match policy {
-            MissingPolicy::Skip => resolved.skipped.extend(&missing),
+            MissingPolicy::Skip => resolved.skipped.extend(&missing_out),
             MissingPolicy::Hold => resolved.replaced.push(format!(
-                "{}: frames {} held from the nearest earlier frame",
-                input.display(),
+                "{name}: frames {} held from the nearest earlier frame",
                 format_frame_list(&missing)
             )),
             MissingPolicy::Black => resolved.replaced.push(format!(
-                "{}: frames {} are transparent black",
-                input.display(),
+                "{name}: frames {} are transparent black",
                 format_frame_list(&missing)
             )),
             MissingPolicy::Error => unreachable!("handled above"),
@@ -101,8 +119,39 @@ pub fn resolve(inputs: &[FramePattern], frames: &[i64], policy: MissingPolicy) -
     resolved.skipped.dedup();
     resolved
         .frames
-        .retain(|f| !resolved.skipped.contains(&f.frame));
+        .retain(|f| resolved.skipped.binary_search(&f.frame).is_err());
     Ok(resolved)
+}
+
+/// The frames a job runs without `--frames`: every frame from the first to
+/// the last on disk of the first input that moves with the output (a
+/// sequence neither held nor a single file), shifted by its offset, so that
+/// `fg.####.exr@+10` with frames 1011-1110 on disk gives 1001-1100; a gap is
+/// a missing frame like any other. With no such input, one frame: 1.
+pub fn default_frames(inputs: &[FramePattern], times: &[InputTime]) -> Result<Vec<i64>> {
+    let moving = inputs
+        .iter()
+        .zip(times)
+        .find(|(input, time)| input.is_sequence() && time.moves());
+    let Some((input, &InputTime::Offset(offset))) = moving else {
+        return Ok(vec![1]);
+    };
+    let shifted = |f: i64| {
+        f.checked_sub(offset).ok_or_else(|| {
+            Error::usage(format!(
+                "frame {f} of {} offset by {offset:+} is past the frame numbers",
+                input.display()
+            ))
+        })
+    };
+    match input.frames_on_disk()?[..] {
+        [first, .., last] => Ok((shifted(first)?..=shifted(last)?).collect()),
+        [only] => Ok(vec![shifted(only)?]),
+        [] => Err(Error::new(
+            Kind::Input,
+            format!("no frames of {} found", input.display()),
+        )),
+    }
 }
 
 /// The last frame on disk at or before `frame`, else the first after it.

@@ -1,5 +1,6 @@
 //! Files: frame sequences, the EXR reader and writer.
 
+pub mod attributes;
 pub mod deep;
 pub mod deflate;
 pub mod overwrite;
@@ -10,5 +11,6 @@ pub mod standard_attributes;
 pub mod stitch;
 pub mod subsampling;
 pub mod tiles;
+pub mod timecode;
 pub mod writer;
 pub mod zip;

@@ -1,6 +1,6 @@
 //! Frame-numbered file names (`####`, `%04d`) and frame lists (`1001-1100:2,1200`).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Kind, Result};
 use std::path::{Path, PathBuf};
 
 /// A file name with an optional frame-number placeholder.
@@ -112,6 +112,104 @@ impl FramePattern {
         frames.dedup();
         Ok(frames)
     }
+}
+
+/// Which frame of an input each output frame reads: `FILE@+10` reads frame
+/// f + 10 for output frame f, `FILE@-5` f - 5, `FILE@1001` frame 1001 for
+/// every output frame, `FILE@hold` the first frame on disk for every one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InputTime {
+    Offset(i64),
+    /// One frame throughout; `None` (`@hold`) is the first on disk.
+    Hold(Option<i64>),
+}
+
+impl Default for InputTime {
+    fn default() -> Self {
+        InputTime::Offset(0)
+    }
+}
+
+impl InputTime {
+    /// `+N`, `-N`, `hold` or `N`, as written after `@`.
+    pub fn parse(text: &str) -> std::result::Result<Self, String> {
+        let text = text.trim();
+        let number = |t: &str| t.parse::<i64>().ok().filter(|n| n.abs() <= MAX_OFFSET);
+        let time = match text.as_bytes().first() {
+            _ if text == "hold" => Some(InputTime::Hold(None)),
+            Some(b'+' | b'-') => number(text).map(InputTime::Offset),
+            Some(b'0'..=b'9') => number(text).map(|f| InputTime::Hold(Some(f))),
+            _ => None,
+        };
+        time.ok_or_else(|| {
+            format!(
+                "'@{text}': write @+10 or @-5 (an offset of at most {MAX_OFFSET} frames), \
+                 @1001 (hold that frame) or @hold (the first frame on disk)"
+            )
+        })
+    }
+
+    /// As written after the file name (`@+10`), empty for the default.
+    pub fn suffix(self) -> String {
+        match self {
+            InputTime::Offset(0) => String::new(),
+            InputTime::Offset(n) => format!("@{n:+}"),
+            InputTime::Hold(None) => "@hold".into(),
+            InputTime::Hold(Some(f)) => format!("@{f}"),
+        }
+    }
+
+    /// The frame of the input that output frame `frame` reads (`@hold` of a
+    /// single file: any, the file is the same).
+    pub fn read(self, frame: i64) -> Result<i64> {
+        match self {
+            InputTime::Offset(n) => frame.checked_add(n).ok_or_else(|| {
+                Error::usage(format!(
+                    "frame {frame} offset by {n:+} is past the frame numbers"
+                ))
+            }),
+            InputTime::Hold(Some(f)) => Ok(f),
+            InputTime::Hold(None) => Ok(frame),
+        }
+    }
+
+    /// `@hold` of a sequence as the frame it holds: its first on disk.
+    pub fn pinned(self, pattern: &FramePattern) -> Result<Self> {
+        match self {
+            InputTime::Hold(None) if pattern.is_sequence() => match pattern.frames_on_disk()?[..] {
+                [first, ..] => Ok(InputTime::Hold(Some(first))),
+                [] => Err(Error::new(
+                    Kind::Input,
+                    format!("{}@hold: no frames on disk", pattern.display()),
+                )),
+            },
+            time => Ok(time),
+        }
+    }
+
+    /// Whether the input moves with the output frames.
+    pub fn moves(self) -> bool {
+        matches!(self, InputTime::Offset(_))
+    }
+}
+
+/// Largest offset taken, in frames.
+const MAX_OFFSET: i64 = 1_000_000_000;
+
+/// Splits `fg.####.exr@+10` (or `fg.####.exr:left@+10`) into the rest and
+/// its time. Only a suffix after an `.exr` name (or its `:PART`) counts, so
+/// other names with an `@` stay whole; after one, a malformed time is an
+/// error.
+pub fn split_time(text: &str) -> Result<(&str, InputTime)> {
+    let Some((rest, time)) = text.rsplit_once('@') else {
+        return Ok((text, InputTime::default()));
+    };
+    let name = super::parts::split_part(rest).0;
+    if !name.to_ascii_lowercase().ends_with(".exr") {
+        return Ok((text, InputTime::default()));
+    }
+    let time = InputTime::parse(time).map_err(|m| Error::usage(format!("{text}: {m}")))?;
+    Ok((rest, time))
 }
 
 /// More digits than any i64 frame number has.
@@ -314,6 +412,57 @@ mod tests {
         assert!(message("1-10y2").contains("bad frame range"));
         assert!(message("0-99999999").contains("more than"));
         assert!(message(&format!("{}-{}", i64::MIN, i64::MAX)).contains("more than"));
+    }
+
+    #[test]
+    fn input_times() {
+        let split = |t| split_time(t).unwrap();
+        assert_eq!(
+            split("fg.####.exr@+10"),
+            ("fg.####.exr", InputTime::Offset(10))
+        );
+        assert_eq!(
+            split("fg.####.exr@-5"),
+            ("fg.####.exr", InputTime::Offset(-5))
+        );
+        assert_eq!(
+            split("fg.####.exr:left@+1"),
+            ("fg.####.exr:left", InputTime::Offset(1))
+        );
+        assert_eq!(
+            split("plate.1001.exr@hold"),
+            ("plate.1001.exr", InputTime::Hold(None))
+        );
+        assert_eq!(
+            split("p.####.EXR@1001"),
+            ("p.####.EXR", InputTime::Hold(Some(1001)))
+        );
+        // An @ elsewhere in a name is the name's.
+        assert_eq!(
+            split("user@host/fg.exr"),
+            ("user@host/fg.exr", InputTime::Offset(0))
+        );
+        assert_eq!(split("fg.exr"), ("fg.exr", InputTime::Offset(0)));
+        for bad in [
+            "fg.exr@",
+            "fg.exr@+1O",
+            "fg.exr@later",
+            "fg.exr@+99999999999",
+        ] {
+            let message = split_time(bad).unwrap_err().message;
+            assert!(message.contains("write @+10"), "{bad}: {message}");
+        }
+        assert_eq!(InputTime::Offset(10).read(1001).unwrap(), 1011);
+        assert_eq!(InputTime::Hold(Some(7)).read(1001).unwrap(), 7);
+        assert!(InputTime::Offset(1).read(i64::MAX).is_err());
+        for time in [
+            InputTime::Offset(-3),
+            InputTime::Hold(None),
+            InputTime::Hold(Some(5)),
+        ] {
+            assert_eq!(InputTime::parse(&time.suffix()[1..]).unwrap(), time);
+        }
+        assert_eq!(InputTime::Offset(0).suffix(), "");
     }
 
     #[test]

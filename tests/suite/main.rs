@@ -19,6 +19,7 @@ mod luminance_chroma;
 mod matting;
 mod memory;
 mod merge_ops;
+mod metadata_and_time;
 mod over_reference;
 mod overnight;
 mod passthrough;

@@ -314,11 +314,7 @@ fn usage_errors_exit_2_and_bad_inputs_exit_3() {
             2,
             "unknown compression",
         ),
-        (
-            vec!["over", s(&none), s(&fg), "-o", s(&single)],
-            3,
-            "none.exr",
-        ),
+        (vec!["over", s(&none), s(&fg), "-o", s(&seq)], 3, "none.exr"),
     ];
     for (args, code, text) in cases {
         let out = run(&args);
