@@ -920,3 +920,17 @@ pub fn part_chunks(path: &Path, part: usize) -> Vec<Vec<u8>> {
         })
         .collect()
 }
+
+/// A python with PyPI's OpenEXR (`$EXRCOMP_OPENEXR_PYTHON`, else `python3`),
+/// or `None` (a skipped check).
+pub fn openexr_python() -> Option<String> {
+    let python = std::env::var("EXRCOMP_OPENEXR_PYTHON").unwrap_or_else(|_| "python3".into());
+    let found = std::process::Command::new(&python)
+        .args(["-c", "import OpenEXR, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        missing(&format!("{python} cannot import PyPI's OpenEXR and numpy"));
+    }
+    found.then_some(python)
+}
