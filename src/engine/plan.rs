@@ -265,7 +265,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
                 Some(part) => part,
                 None => choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?,
             };
-            check_readable(&file, part)?;
+            file.check_codec(part)?;
             parts.push(part);
             Ok(Arc::new(file))
         })
@@ -640,7 +640,7 @@ fn deep_input(
     for pattern in merged {
         let other = Arc::new(ExrFile::open(&pattern.path(at), job.frame_label(at))?);
         let part = choose_part(&other, None, job.view.as_deref())?;
-        check_readable(&other, part)?;
+        other.check_codec(part)?;
         if !other.header(part).deep {
             return Err(other.error("is not deep: deepmerge takes deep files only"));
         }
@@ -648,17 +648,4 @@ fn deep_input(
         files.push((other, part));
     }
     Ok(Some(Arc::new(DeepInput::new(files, levels))))
-}
-
-/// What the engine reads: flat or deep, scanlines or tiles, subsampled
-/// channels in flat scanlines.
-fn check_readable(file: &ExrFile, part: usize) -> Result<()> {
-    let header = file.header(part);
-    if matches!(
-        header.compression,
-        Compression::HTJ2K32 | Compression::HTJ2K256
-    ) {
-        return Err(file.error("HTJ2K compression is not supported"));
-    }
-    Ok(())
 }

@@ -10,12 +10,24 @@
 //! is kept as byte-aligned deflate blocks and libdeflate compresses the rest;
 //! otherwise libdeflate compresses the whole block. One stream either way, so
 //! any zlib decoder reads it.
+//!
+//! A noisy block under 64 KiB (a 64x64 half RGBA tile is 32 KiB, a ZIPS line
+//! of a 2K plate 16 KiB) gives igzip its second half too, as the final
+//! blocks. In such blocks igzip's first half is no longer nearly free (an
+//! opaque alpha's low bytes are runs of a tile's width, not of a plate's,
+//! which igzip crosses at memcpy speed), and libdeflate's second half made a
+//! 4K plate in 64x64 tiles cost 1.5x the CPU time of the same plate in
+//! scanlines. igzip does that half 3x faster, about 12% larger: the tiled
+//! plate is 1.3% larger, still 0.7% smaller than OpenEXR 3.5 writes it.
 
 use libdeflater::{CompressionLvl, Compressor};
 use std::cell::RefCell;
 
 /// Above this compressed/raw ratio, the first half counts as noise.
 const NOISE_RATIO: f64 = 0.5;
+
+/// Noisy blocks smaller than this are igzip's alone.
+const SMALL_BLOCK: usize = 64 << 10;
 
 /// zlib header: deflate with a 32 KiB window, "fastest" level hint; the two
 /// bytes read as a big-endian multiple of 31, as RFC 1950 requires.
@@ -35,14 +47,17 @@ pub fn zlib_compress(data: &[u8], level: u8, out: &mut Vec<u8>) {
     out.reserve(bound(data.len()));
     out.extend_from_slice(&ZLIB_HEADER);
     let half = data.len().div_ceil(2);
-    let rest = match igzip_first_blocks(&data[..half], out) {
+    let rest = match igzip_blocks(&data[..half], false, out) {
         Some(size) if size as f64 > NOISE_RATIO * half as f64 => &data[half..],
         _ => {
             out.truncate(ZLIB_HEADER.len());
             data
         }
     };
-    libdeflate_final_blocks(rest, level, out);
+    let noisy_and_small = rest.len() < data.len() && data.len() < SMALL_BLOCK;
+    if !(noisy_and_small && igzip_blocks(rest, true, out).is_some()) {
+        libdeflate_final_blocks(rest, level, out);
+    }
     out.extend_from_slice(&libdeflater::adler32(data).to_be_bytes());
 }
 
@@ -54,15 +69,16 @@ fn bound(len: usize) -> usize {
 
 /// Without ISA-L: never taken, libdeflate compresses whole blocks.
 #[cfg(not(feature = "isal"))]
-fn igzip_first_blocks(_: &[u8], _: &mut Vec<u8>) -> Option<usize> {
+fn igzip_blocks(_: &[u8], _: bool, _: &mut Vec<u8>) -> Option<usize> {
     None
 }
 
-/// Appends `data` as non-final deflate blocks ending byte-aligned (igzip's
-/// full flush), so further blocks can follow; the size written, or `None`
-/// (with `out` unchanged in length) if igzip refused.
+/// Appends `data` as deflate blocks: the `last` ones of the stream, or
+/// non-final blocks ending byte-aligned (igzip's full flush), so further
+/// blocks can follow; the size written, or `None` (with `out` unchanged in
+/// length) if igzip refused.
 #[cfg(feature = "isal")]
-fn igzip_first_blocks(data: &[u8], out: &mut Vec<u8>) -> Option<usize> {
+fn igzip_blocks(data: &[u8], last: bool, out: &mut Vec<u8>) -> Option<usize> {
     use isal_sys::igzip_lib as isal;
     if data.is_empty() || u32::try_from(bound(data.len())).is_err() {
         return None;
@@ -86,8 +102,12 @@ fn igzip_first_blocks(data: &[u8], out: &mut Vec<u8>) -> Option<usize> {
             stream.level = 1;
             stream.level_buf = level_buf.as_mut_ptr();
             stream.level_buf_size = level_buf.len() as u32;
-            stream.end_of_stream = 0;
-            stream.flush = isal::FULL_FLUSH as u16;
+            stream.end_of_stream = last as u16;
+            stream.flush = if last {
+                isal::NO_FLUSH
+            } else {
+                isal::FULL_FLUSH
+            } as u16;
             stream.gzip_flag = isal::IGZIP_DEFLATE as u16;
             if isal::isal_deflate_stateless(&mut stream) != isal::COMP_OK as i32
                 || stream.avail_in != 0
@@ -153,14 +173,19 @@ mod tests {
     #[test]
     fn noisy_smooth_and_mixed_blocks_round_trip() {
         let smooth: Vec<u8> = (0..100_000).map(|i| (i / 300) as u8).collect();
-        let mut mixed = noise(60_001, 7);
-        mixed.extend(std::iter::repeat_n(128u8, 60_000));
+        let mixed = |len| {
+            let mut data = noise(len, 7);
+            data.extend(std::iter::repeat_n(128u8, len));
+            data
+        };
         for data in [
             noise(1, 3),
             noise(2, 3),
             noise(300_001, 5),
+            noise(20_001, 5),
             smooth,
-            mixed,
+            mixed(60_001),
+            mixed(10_000),
             vec![],
         ] {
             assert_eq!(round_trip(&data), data);
@@ -172,18 +197,53 @@ mod tests {
     fn noise_goes_through_igzip_and_smooth_data_does_not() {
         let mut noisy_start = Vec::new();
         let data = noise(200_000, 11);
-        assert!(igzip_first_blocks(&data[..100_000], &mut noisy_start).is_some());
+        assert!(igzip_blocks(&data[..100_000], false, &mut noisy_start).is_some());
         let mut out = Vec::new();
         zlib_compress(&data, 2, &mut out);
         // igzip's blocks open the stream (after the zlib header).
         assert_eq!(out[2..2 + noisy_start.len()], noisy_start[..]);
         let smooth: Vec<u8> = (0..200_000).map(|i| (i / 1000) as u8).collect();
         let mut igzip_start = Vec::new();
-        igzip_first_blocks(&smooth[..100_000], &mut igzip_start);
+        igzip_blocks(&smooth[..100_000], false, &mut igzip_start);
         zlib_compress(&smooth, 2, &mut out);
         assert_ne!(
             out[2..2 + igzip_start.len().min(out.len() - 2)],
             igzip_start[..]
         );
+    }
+
+    /// The deflate data of `zlib_compress(data)`, without the zlib header
+    /// and checksum.
+    fn deflate_data(data: &[u8]) -> Vec<u8> {
+        let mut out = Vec::new();
+        zlib_compress(data, 2, &mut out);
+        out[2..out.len() - 4].to_vec()
+    }
+
+    #[cfg(feature = "isal")]
+    #[test]
+    fn a_small_noisy_block_is_igzips_alone_and_a_large_one_ends_in_libdeflate() {
+        // A noisy first half and a smooth second half, as a tile of grain.
+        let block = |len: usize| {
+            let mut data = noise(len / 2, 13);
+            data.extend((0..len / 2).map(|i| (i / 500) as u8));
+            data
+        };
+        let igzip = |data: &[u8]| {
+            let mut out = Vec::new();
+            let half = data.len() / 2;
+            igzip_blocks(&data[..half], false, &mut out).unwrap();
+            igzip_blocks(&data[half..], true, &mut out).unwrap();
+            out
+        };
+        let small = block(SMALL_BLOCK - 2);
+        assert_eq!(deflate_data(&small), igzip(&small));
+        assert_eq!(round_trip(&small), small);
+        let large = block(SMALL_BLOCK);
+        let ours = deflate_data(&large);
+        let mut first = Vec::new();
+        igzip_blocks(&large[..large.len() / 2], false, &mut first).unwrap();
+        assert_eq!(ours[..first.len()], first[..]);
+        assert_ne!(ours, igzip(&large), "libdeflate writes the second half");
     }
 }

@@ -117,6 +117,7 @@ impl ExrFile {
         let header = || BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
         let attributes = standard_attributes::attributes(&mut header());
         standard_attributes::check(&attributes).map_err(err)?;
+        standard_attributes::check_compression(&file, &attributes).map_err(err)?;
         // The crate refuses subsampled channels: it parses them as 1 1, and
         // their sampling is set back once it has validated the rest.
         let sampled = subsampling::find(&file, &attributes);
@@ -478,9 +479,21 @@ impl ExrFile {
             .map_err(|m| self.error(format!("deep chunk {index}: {m}")))
     }
 
+    /// Whether `part`'s chunks have a codec here: HTJ2K (OpenEXR 3.4) has
+    /// none in the exr crate.
+    pub fn check_codec(&self, part: usize) -> Result<()> {
+        match self.header(part).compression {
+            Compression::HTJ2K32 | Compression::HTJ2K256 => {
+                Err(self.error("HTJ2K compression is not supported"))
+            }
+            _ => Ok(()),
+        }
+    }
+
     /// Decodes every chunk of `part` (deep chunks: checks their structure), in
     /// parallel; each chunk's bytes are freed once it is checked.
     pub fn check_part(&self, part: usize) -> Result<()> {
+        self.check_codec(part)?;
         (0..self.header(part).chunk_count)
             .into_par_iter()
             .try_for_each(|k| {

@@ -130,24 +130,67 @@ fn every_attribute_survives_and_runs_write_identical_bytes() {
     let (Some(exrheader), Some(input)) = (peer("exrheader"), every_attribute_input(d)) else {
         return;
     };
-    let expected = header_text(&exrheader, &input);
-    assert!(expected.contains("keyCode") && expected.contains("studio:m44"));
-    let outputs: Vec<Vec<u8>> = (0..3)
-        .map(|i| {
-            let output = d.join(format!("out{i}.exr"));
-            let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
-            assert!(out.status.success(), "{}", stderr(&out));
-            assert_eq!(header_text(&exrheader, &output), expected);
-            assert_peers_read(&output);
-            std::fs::read(&output).unwrap()
-        })
-        .collect();
-    assert!(outputs.iter().all(|o| *o == outputs[0]), "runs differ");
-    // A composite keeps B's attributes just as well.
-    let output = d.join("over.exr");
-    let out = run(&["over", s(&input), s(&input), "-o", s(&output), "-q"]);
-    assert!(out.status.success(), "{}", stderr(&out));
-    assert_eq!(header_text(&exrheader, &output), expected);
+    // And a two-part file of it (exrmultipart's), every attribute in each part.
+    let parts = d.join("parts.exr");
+    if let Some(exrmultipart) = peer("exrmultipart") {
+        std::fs::copy(&input, d.join("second.exr")).unwrap();
+        succeed(
+            Command::new(exrmultipart)
+                .args(["-combine", "-i"])
+                .args([&input, &d.join("second.exr")])
+                .arg("-o")
+                .arg(&parts),
+        );
+    }
+    let tiled = ["--tile", "32", "--compression", "piz"];
+    for source in [&input, &parts].into_iter().filter(|p| p.exists()) {
+        let expected = header_text(&exrheader, source);
+        assert!(expected.contains("keyCode") && expected.contains("studio:m44"));
+        // Each job three times: the same bytes each time, every attribute kept
+        // (a composite keeps B's, a tiled output all but the tiles').
+        for job in [
+            vec!["transcode", s(source)],
+            vec!["over", s(source), s(source)],
+            [&["over", s(source), s(source)][..], &tiled].concat(),
+        ] {
+            let outputs: Vec<Vec<u8>> = (0..3)
+                .map(|i| {
+                    let output = d.join(format!("out{i}.exr"));
+                    let args = [&job[..], &["-o", s(&output), "-q"]].concat();
+                    let out = run(&args);
+                    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+                    // What --tile and --compression change, left out of both.
+                    let retiled = |text: &str| match job.len() > 3 {
+                        true => text
+                            .lines()
+                            .filter(|l| {
+                                ![
+                                    "compression ",
+                                    "tiles ",
+                                    "    single level",
+                                    "    tile size",
+                                    "type ",
+                                ]
+                                .iter()
+                                .any(|p| l.starts_with(p))
+                            })
+                            .collect::<Vec<_>>()
+                            .join("\n"),
+                        false => text.to_string(),
+                    };
+                    let text = header_text(&exrheader, &output);
+                    assert_eq!(retiled(&text), retiled(&expected), "{args:?}");
+                    assert_eq!(text.contains("tile size 32 by 32"), job.len() > 3);
+                    assert_peers_read(&output);
+                    std::fs::read(&output).unwrap()
+                })
+                .collect();
+            assert!(
+                outputs.iter().all(|o| *o == outputs[0]),
+                "runs of {job:?} differ"
+            );
+        }
+    }
 }
 
 /// `bytes` of a single-part file with attribute `name` of type `kind`

@@ -482,23 +482,9 @@ fn a_tiled_luminance_file_is_grey_too() {
     }
 }
 
-/// A python with PyPI's OpenEXR (`$EXRCOMP_OPENEXR_PYTHON`, else `python3`),
-/// or `None` (a skipped check).
-fn openexr_python() -> Option<String> {
-    let python = std::env::var("EXRCOMP_OPENEXR_PYTHON").unwrap_or_else(|_| "python3".into());
-    let found = std::process::Command::new(&python)
-        .args(["-c", "import OpenEXR, numpy"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !found {
-        common::missing(&format!("{python} cannot import PyPI's OpenEXR and numpy"));
-    }
-    found.then_some(python)
-}
-
 #[test]
 fn files_openexr_writes_in_every_compression_are_read_or_refused_clearly() {
-    let Some(python) = openexr_python() else {
+    let Some(python) = common::openexr_python() else {
         return;
     };
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/peers/openexr_subsampled.py");

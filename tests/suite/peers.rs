@@ -194,3 +194,77 @@ fn a_higher_dwa_level_writes_smaller_files_that_record_it() {
         );
     }
 }
+
+/// OpenEXR 3.5 (PyPI's) writes what OpenEXR 3.1 cannot: HTJ2K (3.4) and
+/// ZSTD (3.5). Read, they are refused in one line naming the file and the
+/// compression; an HTJ2K part beside the part worked on is carried as it is,
+/// and OpenEXR 3.5 reads it back.
+#[test]
+fn newer_compressions_are_refused_clearly_and_an_htj2k_part_is_carried() {
+    let Some(python) = openexr_python() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = r#"
+import OpenEXR, numpy, sys
+rgb = numpy.random.default_rng(1).random((24, 32, 3)).astype("f2")
+def header(c):
+    return {"compression": c, "type": OpenEXR.scanlineimage}
+for name, c in [("htj2k", OpenEXR.HTJ2K32_COMPRESSION), ("zstd", OpenEXR.ZSTD_COMPRESSION)]:
+    OpenEXR.File(header(c), {"RGB": rgb}).write(f"{name}.exr")
+OpenEXR.File([
+    OpenEXR.Part(header(OpenEXR.ZIP_COMPRESSION), {"RGB": rgb}, "flat"),
+    OpenEXR.Part(header(OpenEXR.HTJ2K256_COMPRESSION), {"RGB": rgb}, "jpeg"),
+]).write("two.exr")
+"#;
+    succeed(Command::new(&python).args(["-c", script]).current_dir(d));
+    let out = d.join("out.exr");
+    for (name, message) in [
+        ("htj2k", "HTJ2K compression is not supported"),
+        ("zstd", "compression code 13 is not supported"),
+        ("two", "HTJ2K compression is not supported"),
+    ] {
+        let input = d.join(format!("{name}.exr"));
+        // The HTJ2K part: the second of two.
+        let part = format!("{}:{}", s(&input), usize::from(name == "two"));
+        let mut commands = vec![
+            vec!["info", s(&input)],
+            vec!["over", &part, &part, "-o", s(&out)],
+        ];
+        if name != "two" {
+            commands.push(vec!["transcode", s(&input), "-o", s(&out)]);
+        }
+        for args in commands {
+            let result = run(&args);
+            let text = stderr(&result);
+            assert_eq!(result.status.code(), Some(3), "{args:?}: {text}");
+            assert!(
+                text.contains(s(&input)) && text.contains(message),
+                "{args:?}: {text}"
+            );
+            assert_eq!(text.trim().lines().count(), 1, "{text}");
+        }
+    }
+    let two = d.join("two.exr");
+    let result = run(&[
+        "transcode",
+        s(&two),
+        "-o",
+        s(&out),
+        "-q",
+        "--compression",
+        "piz",
+    ]);
+    assert!(result.status.success(), "{}", stderr(&result));
+    assert_eq!(part_chunks(&out, 1), part_chunks(&two, 1));
+    let same = r#"
+import OpenEXR, numpy, sys
+a, b = (OpenEXR.File(p, separate_channels=True) for p in sys.argv[1:])
+assert len(b.parts) == 2 and b.parts[1].header["compression"] == OpenEXR.HTJ2K256_COMPRESSION
+for pa, pb in zip(a.parts, b.parts):
+    for name, channel in pa.channels.items():
+        assert numpy.array_equal(channel.pixels, pb.channels[name].pixels), name
+"#;
+    succeed(Command::new(&python).args(["-c", same]).arg(&two).arg(&out));
+}

@@ -118,8 +118,8 @@ fn tiled_foreground_over_scanline_background_equals_reference() {
         assert_identical(&read_image(&out), &reference);
     }
     // And the other way round: a scanline fg over a tiled bg. Below the fg's
-    // window a ZIP bg's blocks would pass through if it were scanlines:
-    // tiles never do.
+    // window a ZIP bg's blocks would pass through if it were scanlines: its
+    // tiles pass only into tiles of their size (tests/suite/tiled_output.rs).
     for c in ["zip", "piz"] {
         write_image(&fg_path, &fg, compression(c), LineOrder::Increasing);
         write_encoded(&bg_path, &bg, tiles(64, c, LineOrder::Unspecified));

@@ -906,3 +906,31 @@ pub fn put_attributes(file: &mut Vec<u8>, attributes: &[(&str, &str, Vec<u8>)]) 
     }
     file.push(0);
 }
+
+/// The bytes of every chunk of `part` of `path` as stored (part number,
+/// coordinates, sizes and data), in offset-table order: a part carried into
+/// another file has the same.
+pub fn part_chunks(path: &Path, part: usize) -> Vec<Vec<u8>> {
+    let file = exrcomp::io::reader::ExrFile::open(path, None).unwrap();
+    let bytes = std::fs::read(path).unwrap();
+    (0..file.header(part).chunk_count)
+        .map(|k| {
+            let range = file.chunk_range(part, k);
+            bytes[range.start as usize..range.end as usize].to_vec()
+        })
+        .collect()
+}
+
+/// A python with PyPI's OpenEXR (`$EXRCOMP_OPENEXR_PYTHON`, else `python3`),
+/// or `None` (a skipped check).
+pub fn openexr_python() -> Option<String> {
+    let python = std::env::var("EXRCOMP_OPENEXR_PYTHON").unwrap_or_else(|_| "python3".into());
+    let found = std::process::Command::new(&python)
+        .args(["-c", "import OpenEXR, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        missing(&format!("{python} cannot import PyPI's OpenEXR and numpy"));
+    }
+    found.then_some(python)
+}
