@@ -24,5 +24,6 @@ mod peers;
 mod real_files;
 mod sequences_and_errors;
 mod stack;
+mod stage_times;
 mod tiled;
 mod tiled_output;
