@@ -573,11 +573,12 @@ fn run_with_progress(
         frame_label: |f| job.frame_label(f),
         summary: Mutex::new(summary),
     };
-    pipeline::run(job, &events)?;
+    let stages = pipeline::run(job, &events)?;
     let mut summary = events
         .summary
         .into_inner()
         .expect("no panic while holding it");
+    summary.stages = Some(stages);
     summary.seconds = report.elapsed();
     summary.interrupted = interrupt::requested();
     Ok((report, summary))

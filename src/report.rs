@@ -1,5 +1,6 @@
 //! Progress on the terminal and the summary at the end of a run.
 
+use crate::engine::stage_time::{self, StageTimes};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::time::{Duration, Instant};
 
@@ -26,6 +27,8 @@ pub struct Summary {
     /// Input frames held or made black (--missing hold|black).
     pub replaced: Vec<String>,
     pub interrupted: bool,
+    /// Where the run's CPU time went, once it has run.
+    pub stages: Option<StageTimes>,
 }
 
 impl Report {
@@ -101,6 +104,10 @@ impl Report {
                 "skipped_missing": summary.skipped,
                 "replaced_missing": summary.replaced,
                 "interrupted": summary.interrupted,
+                // The whole process's, from its start.
+                "process_cpu_s": stage_time::process_cpu().as_secs_f64(),
+                "stages": summary.stages.map(|s| s.to_json()),
+                "serial_share": summary.stages.map(|s| s.serial_share()),
             });
             println!("{record}");
             return;

@@ -2,6 +2,7 @@
 //! rows it produced, as long as a consumer's halo still needs them.
 
 use super::graph::{Graph, Node};
+use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use rayon::prelude::*;
@@ -118,7 +119,11 @@ impl<'g> Composer<'g> {
                         let band = band_rows((end - start) as usize, node.width);
                         node.bands(start, band)
                             .into_par_iter()
-                            .try_for_each(|mut out| op.compute(frame, &args, &mut out))
+                            .try_for_each(|mut out| {
+                                stage_time::task(Stage::Compose, || {
+                                    op.compute(frame, &args, &mut out)
+                                })
+                            })
                             .map_err(|m| graph_node.locate(m))?;
                     }
                     // Inputs read by no later node are trimmed now, not after

@@ -5,6 +5,7 @@
 //! the block rows overlapping a strip (`tiles::Level`).
 
 use super::deep_input::DeepInput;
+use super::stage_time::{self, Stage};
 use super::strip::{Extent, Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
@@ -129,7 +130,10 @@ pub fn decode_strip(
         .collect();
     let decoded: Vec<(usize, usize, UncompressedBlock)> = jobs
         .par_iter()
-        .map(|&(i, k)| Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?)))
+        .map(stage_time::tasks(
+            Stage::Decode,
+            |&(i, k): &(usize, usize)| Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?)),
+        ))
         .collect::<Result<_>>()?;
 
     let mut blocks: Vec<Vec<(usize, UncompressedBlock)>> = inputs
@@ -275,9 +279,9 @@ impl InputCursor {
                 assert!(rest.is_empty(), "the blocks cover the strip's columns");
             }
         }
-        tasks
-            .into_par_iter()
-            .try_for_each(|(k, j, count, mut slices)| {
+        tasks.into_par_iter().try_for_each(stage_time::tasks(
+            Stage::Decode,
+            |(k, j, count, mut slices): (usize, usize, usize, ChunkRows)| {
                 let (_, _, skip, block) = spans[j];
                 let line_bytes = header.channels.bytes_per_pixel * block;
                 file.unpack_zip_chunk(part, k, |unpacked| {
@@ -291,7 +295,8 @@ impl InputCursor {
                         channel_at += block * size;
                     }
                 })
-            })?;
+            },
+        ))?;
         for plane in &mut planes {
             // SAFETY: the tasks wrote every row of every plane (asserted
             // above: the chunks' rows and columns are exactly the strip's).

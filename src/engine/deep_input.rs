@@ -7,6 +7,7 @@
 
 use super::graph::union;
 use super::plan::MAX_STRIP_BYTES;
+use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use crate::error::Result;
 use crate::io::deep::{decode_deep, DeepBlock, DeepChunk};
@@ -280,7 +281,8 @@ fn decode_blocks(
     let blocks = chunks
         .into_par_iter()
         .map(|(_, k, chunk)| {
-            decode_deep(header, &chunk).map_err(|m| file.error(format!("deep chunk {k}: {m}")))
+            stage_time::task(Stage::Decode, || decode_deep(header, &chunk))
+                .map_err(|m| file.error(format!("deep chunk {k}: {m}")))
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Blocks {

@@ -1,6 +1,7 @@
 //! Output strips to compressed chunks, one block per task, in parallel.
 
 use super::plan::output_grid;
+use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use crate::error::{Error, Result};
 use crate::io::writer::IndexedChunk;
@@ -50,7 +51,7 @@ pub fn encode_rows(
         .collect();
     let mut chunks: Vec<IndexedChunk> = blocks
         .into_par_iter()
-        .map(|(column, row)| {
+        .map(stage_time::tasks(Stage::Encode, |(column, row)| {
             let index = grid.chunk(column, row);
             let y0 = window.position.y() + (row * lines) as i32;
             let y1 = (y0 + lines as i32).min(rows.end());
@@ -115,7 +116,7 @@ pub fn encode_rows(
                 .compress_to_chunk(headers)
                 .map_err(|e| Error::internal(format!("cannot compress block: {e}")))?;
             Ok(IndexedChunk { index, chunk })
-        })
+        }))
         .collect::<Result<_>>()?;
     chunks.extend(passed);
     chunks.sort_unstable_by_key(|c| c.index);

@@ -13,4 +13,5 @@ pub mod plan;
 pub mod prepass;
 pub mod provenance;
 pub mod sources;
+pub mod stage_time;
 pub mod strip;

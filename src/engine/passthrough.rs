@@ -9,6 +9,7 @@
 use super::decode::{decode_strip, InputCursor};
 use super::graph::{Graph, Node};
 use super::plan::{output_grid, FramePlan};
+use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use crate::error::Result;
 use crate::io::writer::IndexedChunk;
@@ -178,7 +179,8 @@ impl PassThrough {
         blocks
             .par_iter()
             .map(|block| {
-                let mut chunk = file.checked_zip_chunk(part, block.chunk)?;
+                let mut chunk =
+                    stage_time::task(Stage::Decode, || file.checked_zip_chunk(part, block.chunk))?;
                 // A tile's coordinates count from the data window's top.
                 if let CompressedBlock::Tile(tile) = &mut chunk.compressed_block {
                     tile.coordinates.tile_index = block.tile;

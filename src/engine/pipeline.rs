@@ -9,6 +9,7 @@ use super::encode::encode_rows;
 use super::interrupt;
 use super::passthrough::PassThrough;
 use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
+use super::stage_time::{self, Stage, StageTimes};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
 use crate::io::reader::ExrFile;
@@ -66,29 +67,43 @@ fn relay<T, U>(msg: &Msg<T>, plan: Arc<FramePlan>) -> Msg<U> {
     }
 }
 
-/// Receiving side of a stage: `None` once the upstream stage has stopped.
-fn receive<T>(rx: &Receiver<Msg<T>>) -> Option<Msg<T>> {
-    rx.recv().ok()
+/// Receiving side of `stage`: `None` once the upstream stage has stopped.
+fn receive<T>(stage: Stage, rx: &Receiver<Msg<T>>) -> Option<Msg<T>> {
+    stage_time::wait(stage, || rx.recv().ok())
 }
 
-/// Sends downstream; false once the downstream stage has stopped (it failed,
-/// and reports why).
-fn send<T>(tx: &Sender<Msg<T>>, msg: Msg<T>) -> bool {
-    tx.send(msg).is_ok()
+/// Sends downstream from `stage`; false once the downstream stage has
+/// stopped (it failed, and reports why).
+fn send<T>(stage: Stage, tx: &Sender<Msg<T>>, msg: Msg<T>) -> bool {
+    stage_time::wait(stage, || tx.send(msg).is_ok())
 }
 
-/// Runs `job`, reporting each frame to `events`. Stops early, without an
-/// error, when an interruption is requested (`interrupt::requested`).
-pub fn run(job: &Job, events: &impl Events) -> Result<()> {
+/// Runs `job`, reporting each frame to `events`, and returns where its CPU
+/// time went (`stage_time.rs`). Stops early, without an error, when an
+/// interruption is requested (`interrupt::requested`).
+pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
+    let start = StageTimes::now();
     let (decoded_tx, decoded_rx) = bounded::<Msg<Decoded>>(CHANNEL_STRIPS);
     let (composed_tx, composed_rx) = bounded::<Msg<Composed>>(CHANNEL_STRIPS);
     let (encoded_tx, encoded_rx) = bounded::<Msg<Vec<IndexedChunk>>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
-            scope.spawn(|| decode_stage(job, events, decoded_tx)),
-            scope.spawn(|| compose_stage(job, decoded_rx, composed_tx)),
-            scope.spawn(|| encode_stage(job, composed_rx, encoded_tx)),
-            scope.spawn(|| write_stage(encoded_rx, events)),
+            scope.spawn(|| {
+                stage_time::stage_thread(Stage::Decode, || decode_stage(job, events, decoded_tx))
+            }),
+            scope.spawn(|| {
+                stage_time::stage_thread(Stage::Compose, || {
+                    compose_stage(job, decoded_rx, composed_tx)
+                })
+            }),
+            scope.spawn(|| {
+                stage_time::stage_thread(Stage::Encode, || {
+                    encode_stage(job, composed_rx, encoded_tx)
+                })
+            }),
+            scope.spawn(|| {
+                stage_time::stage_thread(Stage::Write, || write_stage(encoded_rx, events))
+            }),
         ];
         stages.map(|stage| {
             stage
@@ -97,7 +112,8 @@ pub fn run(job: &Job, events: &impl Events) -> Result<()> {
         })
     });
     // The earliest stage's error is the cause; later ones only saw it stop.
-    results.into_iter().collect::<Result<Vec<()>>>().map(drop)
+    results.into_iter().collect::<Result<Vec<()>>>()?;
+    Ok(StageTimes::now().since(&start))
 }
 
 fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Result<()> {
@@ -115,12 +131,12 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
             // Downstream has stopped (and reports why) or we were interrupted.
             Ok(false) => {
                 if begun {
-                    send(&tx, Msg::Abort);
+                    send(Stage::Decode, &tx, Msg::Abort);
                 }
                 return Ok(());
             }
             Err(e) if job.keep_going && e.kind == Kind::Input => {
-                if begun && !send(&tx, Msg::Abort) {
+                if begun && !send(Stage::Decode, &tx, Msg::Abort) {
                     return Ok(());
                 }
                 events.failed(sources.frame, &e);
@@ -145,7 +161,7 @@ fn decode_frame(
             false => Msg::Begin(plan.clone()),
             true => Msg::Part(plan.clone()),
         };
-        if !send(tx, msg) {
+        if !send(Stage::Decode, tx, msg) {
             return Ok(false);
         }
         *begun = true;
@@ -153,7 +169,7 @@ fn decode_frame(
             return Ok(false);
         }
     }
-    Ok(send(tx, Msg::End))
+    Ok(send(Stage::Decode, tx, Msg::End))
 }
 
 /// Sends the strips of one planned part; `Ok(false)` when it had to stop.
@@ -183,7 +199,7 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
             strips,
             passed,
         };
-        if !send(tx, Msg::Strip(decoded)) {
+        if !send(Stage::Decode, tx, Msg::Strip(decoded)) {
             return Ok(false);
         }
     }
@@ -206,7 +222,7 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
     let (mut lines, mut across) = (1, 1);
     let mut frame = 0;
     let mut written = IntegerBounds::zero();
-    while let Some(msg) = receive(&rx) {
+    while let Some(msg) = receive(Stage::Compose, &rx) {
         let out = match msg {
             Msg::Begin(ref plan) | Msg::Part(ref plan) => {
                 frame = plan.frame;
@@ -252,7 +268,7 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                 Msg::Abort
             }
         };
-        if !send(&tx, out) {
+        if !send(Stage::Compose, &tx, out) {
             break;
         }
     }
@@ -281,7 +297,7 @@ fn encode_stage(
     tx: Sender<Msg<Vec<IndexedChunk>>>,
 ) -> Result<()> {
     let mut plan: Option<Arc<FramePlan>> = None;
-    while let Some(msg) = receive(&rx) {
+    while let Some(msg) = receive(Stage::Encode, &rx) {
         let out = match msg {
             Msg::Begin(ref p) | Msg::Part(ref p) => {
                 plan = Some(p.clone());
@@ -301,7 +317,7 @@ fn encode_stage(
             Msg::End => Msg::End,
             Msg::Abort => Msg::Abort,
         };
-        if !send(&tx, out) {
+        if !send(Stage::Encode, &tx, out) {
             break;
         }
     }
@@ -309,7 +325,7 @@ fn encode_stage(
 }
 
 fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Result<()> {
-    while let Some(msg) = receive(&rx) {
+    while let Some(msg) = receive(Stage::Write, &rx) {
         let plan = match msg {
             Msg::Begin(plan) => plan,
             Msg::Abort => continue,
@@ -318,7 +334,7 @@ fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Re
         let mut abandoned = false;
         // The writer tells a frame's parts apart by their chunk counts.
         let next = || loop {
-            return match receive(&rx) {
+            return match receive(Stage::Write, &rx) {
                 Some(Msg::Strip(chunks)) => Ok(Some(chunks)),
                 Some(Msg::Part(_)) => continue,
                 Some(Msg::End) => Ok(None),

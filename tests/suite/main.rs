@@ -28,5 +28,6 @@ mod real_files;
 mod sequences_and_errors;
 mod shuffle;
 mod stack;
+mod stage_times;
 mod tiled;
 mod tiled_output;
