@@ -59,6 +59,16 @@ fn facts(path: &Path) -> Result<Facts> {
         let mut attributes: Vec<(String, AttributeValue)> = header
             .all_named_attributes()
             .map(|(name, value)| (String::from_utf8_lossy(name).into_owned(), value))
+            // The crate's computed type of a deep part is the flat one's.
+            .map(|(name, value)| match value {
+                AttributeValue::BlockType(BlockType::ScanLine) if header.deep => {
+                    (name, AttributeValue::BlockType(BlockType::DeepScanLine))
+                }
+                AttributeValue::BlockType(BlockType::Tile) if header.deep => {
+                    (name, AttributeValue::BlockType(BlockType::DeepTile))
+                }
+                value => (name, value),
+            })
             .filter(|(name, _)| {
                 name == "type" || held.iter().any(|a| a.part == index && a.name == *name)
             })

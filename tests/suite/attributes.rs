@@ -427,7 +427,7 @@ fn info_prints_what_exrheader_prints() {
         return;
     };
     // Every attribute type, in a file of ours (which declares its chunkCount
-    // and type), in a multi-part file of the exr crate's, and tiled.
+    // and type), in a multi-part file of the exr crate's, tiled, and deep.
     let output = d.join("out.exr");
     let out = run(&["transcode", s(&input), "-o", s(&output), "-q"]);
     assert!(out.status.success(), "{}", stderr(&out));
@@ -444,7 +444,9 @@ fn info_prints_what_exrheader_prints() {
             .unwrap();
         assert!(out.status.success(), "{}", stderr(&out));
     }
-    for path in [&output, &parts, &tiled] {
+    // And OpenEXR's deep scanline pass, whose type is not the crate's.
+    let deep = shipped_images().join("v2/LowResLeftView/Trunks.exr");
+    for path in [&output, &parts, &tiled, &deep] {
         if path.exists() {
             assert_eq!(
                 info_text(path),
