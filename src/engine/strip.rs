@@ -1,10 +1,15 @@
 //! A band of whole rows of one image: one typed plane per channel.
 
+use super::stage_time::{self, Stage};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use half::f16;
 use half::slice::HalfFloatSliceExt;
+use rayon::prelude::*;
 use std::mem::MaybeUninit;
 use std::ops::Range;
+
+/// Samples below which zeroing is not worth a task of its own.
+const MIN_ZERO_PIECE: usize = 16 << 10;
 
 /// Samples of one channel, row-major, in the channel's own type so that
 /// pass-through channels stay bit-exact.
@@ -109,12 +114,28 @@ impl Samples {
         }
     }
 
-    /// Appends `count` zero samples.
+    /// Appends `count` zero samples, written in pieces on the pool (as
+    /// compose's tasks, the only caller's): a strip's zeros are megabytes,
+    /// which the compose thread would otherwise write alone.
     fn grow(&mut self, count: usize) {
+        fn zeros<T: Copy + Send + Sync>(v: &mut Vec<T>, count: usize, zero: T) {
+            v.reserve(count);
+            let piece = count
+                .div_ceil(4 * rayon::current_num_threads())
+                .max(MIN_ZERO_PIECE);
+            v.spare_capacity_mut()[..count]
+                .par_chunks_mut(piece)
+                .for_each(stage_time::tasks(
+                    Stage::Compose,
+                    |piece: &mut [MaybeUninit<T>]| piece.fill(MaybeUninit::new(zero)),
+                ));
+            // SAFETY: the first `count` samples of the spare room were just written.
+            unsafe { v.set_len(v.len() + count) };
+        }
         match self {
-            Samples::F16(v) => v.resize(v.len() + count, f16::ZERO),
-            Samples::F32(v) => v.resize(v.len() + count, 0.0),
-            Samples::U32(v) => v.resize(v.len() + count, 0),
+            Samples::F16(v) => zeros(v, count, f16::ZERO),
+            Samples::F32(v) => zeros(v, count, 0.0),
+            Samples::U32(v) => zeros(v, count, 0),
         }
     }
 
