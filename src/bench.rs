@@ -294,6 +294,11 @@ fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
         Stats::of(&values).json(&values)
     };
     let wall = Stats::of(&column(|r| r.wall));
+    // The engine's share of CPU outside the pool, where it reports one.
+    let shares: Vec<f64> = runs
+        .iter()
+        .filter_map(|r| r.summary["serial_share"].as_f64())
+        .collect();
     let first = &runs[0].summary;
     let frames = first["frames"].as_f64().unwrap_or(0.0);
     let pixels = first["pixels"].as_f64().unwrap_or(0.0);
@@ -311,6 +316,7 @@ fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
         "read_bytes_per_second": per_second(Stats::of(&column(|r| r.read_bytes)).median),
         "written_bytes_per_second": per_second(Stats::of(&column(|r| r.written_bytes)).median),
         "stages": stage_medians(&runs),
+        "serial_share": (!shares.is_empty()).then(|| Stats::of(&shares).median),
     }))
 }
 
