@@ -103,8 +103,20 @@ struct Run {
     peak_rss: f64,
     read_bytes: f64,
     written_bytes: f64,
+    /// The sizes of the files it wrote.
+    output_bytes: f64,
     /// The run's own `--json` summary.
     summary: Value,
+}
+
+/// The sizes of the files in `folder` together.
+fn folder_bytes(folder: &Path) -> f64 {
+    std::fs::read_dir(folder)
+        .into_iter()
+        .flatten()
+        .filter_map(|e| e.ok()?.metadata().ok())
+        .map(|m| m.len() as f64)
+        .sum()
 }
 
 /// Drops `files` from the page cache, so the next run reads the storage.
@@ -181,6 +193,7 @@ fn run_once(args: &[String], threads: Option<usize>) -> Result<Run> {
         peak_rss: usage.ru_maxrss as f64 * 1024.0,
         read_bytes: io_field("rchar:"),
         written_bytes: io_field("wchar:"),
+        output_bytes: 0.0,
         summary: serde_json::from_str(out.trim()).unwrap_or(Value::Null),
     })
 }
@@ -279,8 +292,9 @@ fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
         if args.cold {
             drop_cached(&files);
         }
-        let run = run_once(&job.args_into(&run_folder), args.threads)
+        let mut run = run_once(&job.args_into(&run_folder), args.threads)
             .map_err(|e| Error::new(e.kind, format!("{}: {}", job.name, e.message)))?;
+        run.output_bytes = folder_bytes(&run_folder);
         if !args.keep {
             let _ = std::fs::remove_dir_all(&run_folder);
         }
@@ -311,6 +325,7 @@ fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
         "wall_seconds": figure(|r| r.wall),
         "cpu_seconds": figure(|r| r.cpu),
         "peak_rss_bytes": figure(|r| r.peak_rss),
+        "output_bytes": figure(|r| r.output_bytes),
         "frames_per_second": per_second(frames),
         "megapixels_per_second": per_second(pixels) / 1e6,
         "read_bytes_per_second": per_second(Stats::of(&column(|r| r.read_bytes)).median),

@@ -300,10 +300,13 @@ pub struct RunArgs {
     /// OpenEXR's).
     #[arg(long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
     pub dwa_level: Option<f32>,
-    /// Write tiled files with tiles of WxH pixels (N: NxN), one level,
-    /// instead of scanlines.
+    /// Write tiled files with tiles of WxH pixels (N: NxN), one level
+    /// (default: tiles as the background's if it is tiled, else scanlines).
     #[arg(long, value_parser = parse_tile)]
     pub tile: Option<exr::math::Vec2<usize>>,
+    /// Write scanline files even when the background is tiled.
+    #[arg(long, conflicts_with = "tile")]
+    pub scanline: bool,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
     #[arg(long, value_enum, default_value = "error")]
@@ -359,6 +362,18 @@ pub struct RunArgs {
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
     pub strip_rows: Option<usize>,
+}
+
+impl RunArgs {
+    /// The output's block layout these options ask for.
+    pub fn blocks(&self) -> crate::engine::plan::OutputBlocks {
+        use crate::engine::plan::OutputBlocks;
+        match (self.tile, self.scanline) {
+            (Some(size), _) => OutputBlocks::Tiles(size),
+            (None, true) => OutputBlocks::Scanlines,
+            (None, false) => OutputBlocks::FollowInput,
+        }
+    }
 }
 
 fn parse_rows(text: &str) -> Result<(i32, i32), String> {

@@ -70,6 +70,7 @@ pub fn run(command: Command) -> Result<()> {
                 compression: run.compression.clone().or(plan.compression),
                 all_parts: run.all_parts || plan.all_parts,
                 tile: run.tile.or(plan.tile),
+                scanline: run.scanline || (run.tile.is_none() && plan.scanline),
                 attribs: plan.attribs.into_iter().chain(run.attribs).collect(),
                 erase_attribs: plan
                     .erase_attribs
@@ -283,7 +284,7 @@ fn input_job(
         graph,
         compression: parse_compression(run)?,
         header_base: HeaderBase::Input(header_from),
-        tile: run.tile,
+        blocks: run.blocks(),
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
         resume: run.resume,
@@ -392,7 +393,7 @@ fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs
         },
         compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
         header_base: HeaderBase::New(display),
-        tile: run.tile,
+        blocks: run.blocks(),
         strip_rows: run.strip_rows,
         zip_level: run.zip_level,
         resume: run.resume,

@@ -36,6 +36,7 @@ const WRITE_KEYS: &[&str] = &[
     "write",
     "compression",
     "tile",
+    "scanline",
     "all_parts",
     "attrib",
     "erase_attrib",
@@ -58,6 +59,8 @@ pub struct JobPlan {
     pub all_parts: bool,
     /// The write node's tile size (`--tile` wins).
     pub tile: Option<Vec2<usize>>,
+    /// The write node's `scanline = true` (`--tile` wins).
+    pub scanline: bool,
     pub frames: Option<String>,
     /// The write node's `attrib`, `erase_attrib`, `timecode` and `fps`, as
     /// the options of those names take them (the command line's win, or
@@ -232,6 +235,17 @@ impl<'a> Node<'a> {
         Ok(())
     }
 
+    /// A switch: absent is false.
+    fn flag(&self, at: &Source, key: &str) -> Result<bool> {
+        match self.get(key) {
+            None => Ok(false),
+            Some(v) => v
+                .get_ref()
+                .as_bool()
+                .map_or_else(|| at.error(v.span(), format!("{key} is true or false")), Ok),
+        }
+    }
+
     fn get(&self, key: &str) -> Option<&'a Spanned<Value>> {
         self.keys
             .iter()
@@ -250,15 +264,6 @@ impl<'a> Node<'a> {
                 values.insert(param.name, text);
             }
         }
-        let boolean = |key: &str| -> Result<bool> {
-            match self.get(key) {
-                None => Ok(false),
-                Some(v) => v
-                    .get_ref()
-                    .as_bool()
-                    .map_or_else(|| at.error(v.span(), format!("{key} is true or false")), Ok),
-            }
-        };
         let layers = match self.get("layers") {
             None => Vec::new(),
             Some(v) => match v.get_ref() {
@@ -274,10 +279,10 @@ impl<'a> Node<'a> {
             values,
             layers: Selection {
                 layers,
-                all: boolean("all_layers")?,
+                all: self.flag(at, "all_layers")?,
                 view: self.get("view").map(|v| string(at, v)).transpose()?,
             },
-            straight: boolean("straight")?,
+            straight: self.flag(at, "straight")?,
             job_file: true,
         })
     }
@@ -466,13 +471,8 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
         graph: graph.finish(),
         output: beside(at.path, output),
         compression: text("compression")?,
-        all_parts: match out.get("all_parts") {
-            None => false,
-            Some(v) => v
-                .get_ref()
-                .as_bool()
-                .map_or_else(|| at.error(v.span(), "all_parts is true or false"), Ok)?,
-        },
+        all_parts: out.flag(at, "all_parts")?,
+        scanline: out.flag(at, "scanline")?,
         tile: match out.get("tile") {
             Some(tile) => {
                 let text = string(at, tile)?;

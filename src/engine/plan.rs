@@ -33,6 +33,19 @@ const STRIP_BYTES: usize = 1 << 20;
 /// apart) comes near it; real frames take a few megabytes per block.
 pub const MAX_STRIP_BYTES: usize = 256 << 20;
 
+/// How the output's pixels are laid out in blocks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputBlocks {
+    /// As the part the header comes from: tiles of its size (one level) if
+    /// it is tiled, else scanlines; as oiiotool keeps an input's tiling, and
+    /// so that a tiled input's untouched tiles can be copied.
+    FollowInput,
+    /// Scanlines (`--scanline`).
+    Scanlines,
+    /// Tiles of this size, one level (`--tile`).
+    Tiles(Vec2<usize>),
+}
+
 /// A job: input sequences through a graph into an output sequence.
 pub struct Job {
     pub inputs: Vec<FramePattern>,
@@ -55,8 +68,8 @@ pub struct Job {
     pub graph: Graph,
     /// Output compression; `None` keeps that of the input the header comes from.
     pub compression: Option<Compression>,
-    /// Tile size of a tiled output (one level); `None` writes scanlines.
-    pub tile: Option<Vec2<usize>>,
+    /// Scanlines or tiles for the output.
+    pub blocks: OutputBlocks,
     pub header_base: HeaderBase,
     /// Rows per strip (rounded up to whole blocks); `None` sizes by bytes.
     pub strip_rows: Option<usize>,
@@ -366,7 +379,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
-    header.blocks = match job.tile {
+    // A new header (generate, demo) has the exr crate's default blocks.
+    let input_blocks = match job.header_base {
+        HeaderBase::Input(_) => header.blocks,
+        HeaderBase::New(_) => BlockDescription::ScanLines,
+    };
+    let tile_size = match (job.blocks, input_blocks, job.rows) {
+        (OutputBlocks::Tiles(size), _, _) => Some(size),
+        // Bands for `stitch` join scanline blocks.
+        (OutputBlocks::FollowInput, BlockDescription::Tiles(tiles), None) => Some(tiles.tile_size),
+        _ => None,
+    };
+    header.blocks = match tile_size {
         Some(tile_size) => BlockDescription::Tiles(TileDescription {
             tile_size,
             level_mode: LevelMode::Singular,
@@ -402,7 +426,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             .collect(),
         None => Vec::new(),
     };
-    if let (Some(_), Some(_)) = (job.tile, job.rows) {
+    if let (OutputBlocks::Tiles(_), Some(_)) = (job.blocks, job.rows) {
         return Err(Error::usage(
             "--rows writes bands of scanline files only (stitch joins scanline blocks): drop --tile",
         ));

@@ -74,6 +74,25 @@ fn a_record_holds_the_runs_the_machine_and_leaves_no_output() {
     let read = job["read_bytes_per_second"].as_f64().unwrap()
         * job["wall_seconds"]["median"].as_f64().unwrap();
     assert!(read >= input as f64, "read {read} bytes of {input}");
+    // Each run wrote the bytes the same transcode writes.
+    let copy = d.join("copy");
+    ok(&[
+        "transcode",
+        s(&d.join("bg.####.exr")),
+        "-o",
+        s(&copy.join("t.####.exr")),
+        "-q",
+    ]);
+    let written: u64 = std::fs::read_dir(&copy)
+        .unwrap()
+        .map(|e| e.unwrap().metadata().unwrap().len())
+        .sum();
+    let outputs = job["output_bytes"]["runs"].as_array().unwrap();
+    assert!(
+        outputs.iter().all(|b| b.as_f64() == Some(written as f64)),
+        "{outputs:?} vs {written}"
+    );
+    std::fs::remove_dir_all(&copy).unwrap();
     assert!(!d.join("t.0001.exr").exists());
     let names: Vec<_> = std::fs::read_dir(d)
         .unwrap()

@@ -11,11 +11,6 @@ fn pass(name: &str) -> Option<PathBuf> {
     public_image(&format!("v2/LowResLeftView/{name}.exr"))
 }
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 /// `oiiotool ARGS --ch R,G,B,A -o OUT`.
 fn oiiotool_rgba(oiio: &Path, args: &[&str], out: &Path) {
     let status = Command::new(oiio)

@@ -8,11 +8,6 @@ use half::f16;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 /// A float RGBA image with a shifted data window, Z and id, and a half
 /// `diffuse` layer, written to `dir/NAME.exr`.
 fn plate(dir: &Path, name: &str, seed: u64) -> (PathBuf, Img) {

@@ -10,11 +10,6 @@ fn examples() -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/examples")
 }
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 /// Frames 1-4 of a float RGBA sequence `name` in `dir`.
 fn sequence(dir: &Path, name: &str, seed: u64, x: i32, extra: bool) {
     for frame in 1..=4 {

@@ -60,11 +60,6 @@ fn write(dir: &Path, name: &str, img: &Img) -> PathBuf {
     path
 }
 
-fn exrcomp_ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 fn get(img: &Img, name: &str, i: usize) -> f32 {
     img.channels[name].get_f32(i)
 }
@@ -101,7 +96,7 @@ fn triangulation_recovers_alpha_and_colour_to_float_rounding() {
         write(d, "bg_b.exr", &image(|i| bb[i], None)),
     ];
     let out = d.join("matte.exr");
-    exrcomp_ok(&[
+    ok(&[
         "triangulate",
         "--over-a",
         s(&paths[0]),
@@ -154,7 +149,7 @@ fn key(d: &Path, plate: &Img, args: &[&str]) -> Img {
         "-q",
     ];
     command.extend_from_slice(args);
-    exrcomp_ok(&command);
+    ok(&command);
     read_image(&out)
 }
 
@@ -276,7 +271,7 @@ fn a_difference_matte_separates_the_foreground_from_its_clean_plate() {
     );
     let clean = write(d, "clean.exr", &image(|i| plate[i], None));
     let out = d.join("matte.exr");
-    exrcomp_ok(&[
+    ok(&[
         "diffmatte",
         s(&shot),
         "--clean-plate",
@@ -334,7 +329,7 @@ fn erode_and_dilate_equal_the_reference_and_undo_each_other_on_a_point() {
     let input = write(d, "matte.exr", &matte);
     for (command, dilate) in [("erode", false), ("dilate", true)] {
         let out = d.join(format!("{command}.exr"));
-        exrcomp_ok(&[
+        ok(&[
             command,
             s(&input),
             "-o",
@@ -357,8 +352,8 @@ fn erode_and_dilate_equal_the_reference_and_undo_each_other_on_a_point() {
     point[10 * W + 20] = 1.0;
     let p = write(d, "point.exr", &image(|_| [0.0; 3], Some(&point)));
     let (grown, back) = (d.join("grown.exr"), d.join("back.exr"));
-    exrcomp_ok(&["dilate", s(&p), "-o", s(&grown), "--radius", "2", "-q"]);
-    exrcomp_ok(&["erode", s(&grown), "-o", s(&back), "--radius", "2", "-q"]);
+    ok(&["dilate", s(&p), "-o", s(&grown), "--radius", "2", "-q"]);
+    ok(&["erode", s(&grown), "-o", s(&back), "--radius", "2", "-q"]);
     let lit = |img: &Img| (0..W * H).filter(|&i| get(img, "A", i) > 0.0).count();
     assert_eq!(lit(&read_image(&grown)), 13);
     assert_eq!(
@@ -392,9 +387,9 @@ fn key_then_over_a_new_background_is_one_pass_in_a_job() {
         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"keyed\", \"bg\"]\n\n\
         [[node]]\nname = \"out\"\nwrite = \"comp.exr\"\ninputs = [\"comp\"]\n";
     std::fs::write(d.join("job.toml"), job).unwrap();
-    exrcomp_ok(&["run", s(&d.join("job.toml")), "-q"]);
+    ok(&["run", s(&d.join("job.toml")), "-q"]);
     let p = |n: &str| d.join(n);
-    exrcomp_ok(&[
+    ok(&[
         "key",
         s(&p("plate.exr")),
         "-o",
@@ -404,7 +399,7 @@ fn key_then_over_a_new_background_is_one_pass_in_a_job() {
         "--despill",
         "-q",
     ]);
-    exrcomp_ok(&[
+    ok(&[
         "over",
         s(&p("k.exr")),
         s(&p("bg.exr")),

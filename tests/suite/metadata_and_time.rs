@@ -30,11 +30,6 @@ fn attribute(text: &str, name: &str) -> Option<String> {
     )
 }
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 #[test]
 fn attributes_read_back_typed_as_exrheader_prints_them() {
     let Some(exrheader) = peer("exrheader") else {

@@ -9,11 +9,6 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 /// Half RGBA with Z and id, plus a half `diffuse` layer (R, G, B, A) and a
 /// float `spec` layer (R, G, B), in a shifted data window.
 fn layered(seed: u64, x: i32, width: usize) -> Img {

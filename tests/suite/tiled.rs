@@ -17,10 +17,6 @@ fn tiles(size: usize, compression_name: &str, line_order: LineOrder) -> Encoding
 }
 
 /// `exrcomp ARGS`, which must succeed.
-fn run_ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "exrcomp {args:?}: {}", stderr(&out));
-}
 
 #[test]
 fn tiled_inputs_transcode_to_their_exact_pixels() {
@@ -49,7 +45,7 @@ fn tiled_inputs_transcode_to_their_exact_pixels() {
                 for strip in [&["--strip-rows", "16"][..], &[]] {
                     let mut args = vec!["transcode", s(&input), "-o", s(&output), "-q"];
                     args.extend_from_slice(strip);
-                    run_ok(&args);
+                    ok(&args);
                     let what = format!("{width}x{height} in {tile}x{tile} tiles, {c}, {order:?}");
                     println!("{what} {strip:?}");
                     assert_identical(&read_image(&output), &img);
@@ -78,7 +74,7 @@ fn tiled_inputs_read_as_openexr_reads_them() {
                 .args(["--tile", tile, tile, "--compression", c, "-o"])
                 .arg(&tiled),
         );
-        run_ok(&["transcode", s(&tiled), "-o", s(&output), "-q"]);
+        ok(&["transcode", s(&tiled), "-o", s(&output), "-q"]);
         assert_idiff_identical(&idiff, &tiled, &output);
     }
     // OpenEXR's own tiled images: PIZ 128x128 tiles, and level 0 of a mipmap.
@@ -89,7 +85,7 @@ fn tiled_inputs_read_as_openexr_reads_them() {
         let Some(image) = public_image(name) else {
             continue;
         };
-        run_ok(&["transcode", s(&image), "-o", s(&output), "-q"]);
+        ok(&["transcode", s(&image), "-o", s(&output), "-q"]);
         assert_idiff_identical(&idiff, &image, &output);
     }
 }
@@ -105,7 +101,7 @@ fn tiled_foreground_over_scanline_background_equals_reference() {
     write_image(&bg_path, &bg, compression("zip"), LineOrder::Increasing);
     let reference = reference_over(&fg, &bg, false);
     for strip in ["1", "20", "100"] {
-        run_ok(&[
+        ok(&[
             "over",
             s(&fg_path),
             s(&bg_path),
@@ -123,7 +119,7 @@ fn tiled_foreground_over_scanline_background_equals_reference() {
     for c in ["zip", "piz"] {
         write_image(&fg_path, &fg, compression(c), LineOrder::Increasing);
         write_encoded(&bg_path, &bg, tiles(64, c, LineOrder::Unspecified));
-        run_ok(&["over", s(&fg_path), s(&bg_path), "-o", s(&out), "-q"]);
+        ok(&["over", s(&fg_path), s(&bg_path), "-o", s(&out), "-q"]);
         assert_identical(&read_image(&out), &reference);
         assert_peers_read(&out);
     }
@@ -192,7 +188,7 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
     let size = Vec2(97, 61);
     // `transcode --level LEVEL` of the input gives `expected` exactly.
     let level_is = |level: &str, expected: &Img| {
-        run_ok(&[
+        ok(&[
             "transcode",
             s(&input),
             "-o",
@@ -213,7 +209,7 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
             level_is(&n.to_string(), level);
         }
         // Level 0 by default, and no level past the last.
-        run_ok(&["transcode", s(&input), "-o", s(&output), "-q"]);
+        ok(&["transcode", s(&input), "-o", s(&output), "-q"]);
         assert_identical(&read_image(&output), &levels[0]);
         let past = sizes.len().to_string();
         let out = run(&["transcode", s(&input), "-o", s(&output), "--level", &past]);
@@ -245,7 +241,7 @@ fn level_option_reads_mipmap_and_ripmap_levels() {
     let levels = level_images(&sizes, 50);
     write_levels(&input, &levels, rounding, None);
     let args = ["over", s(&input), s(&bg_path), "-o", s(&output), "-q"];
-    run_ok(&[&args[..], &["--level", "1"]].concat());
+    ok(&[&args[..], &["--level", "1"]].concat());
     assert_identical(
         &read_image(&output),
         &reference_over(&levels[1], &bg, false),
@@ -263,7 +259,7 @@ fn levels_of_openexrs_mipmap_read_as_openexr_reads_them() {
     let dir = tempfile::tempdir().unwrap();
     let (ours, theirs) = (dir.path().join("ours.exr"), dir.path().join("theirs.exr"));
     for level in ["1", "4", "9"] {
-        run_ok(&[
+        ok(&[
             "transcode",
             s(&image),
             "-o",
@@ -307,7 +303,7 @@ fn tiled_inputs_clipped_to_the_result_equal_reference() {
             s(&out),
             "-q",
         ];
-        run_ok(&[&args[..], strip].concat());
+        ok(&[&args[..], strip].concat());
         assert_identical(&read_image(&out), &reference);
     }
 }

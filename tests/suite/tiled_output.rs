@@ -12,11 +12,6 @@ use exr::prelude::{Blocks, Encoding};
 use exrcomp::io::reader::ExrFile;
 use std::path::Path;
 
-fn run_ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "exrcomp {args:?}: {}", stderr(&out));
-}
-
 /// `path` is a single-level tiled file of `tile` tiles in increasing line
 /// order, its chunks in the file in table order (row by row, left to right).
 fn assert_tiled(path: &Path, tile: (usize, usize)) {
@@ -63,7 +58,7 @@ fn tiled_output_holds_the_input_pixels() {
             for c in ["zip", "piz", "none"] {
                 let tile = format!("{w}x{h}");
                 let args = ["transcode", s(&input), "-o", s(&output), "-q"];
-                run_ok(&[&args[..], &["--tile", &tile, "--compression", c]].concat());
+                ok(&[&args[..], &["--tile", &tile, "--compression", c]].concat());
                 println!("{width}x{height} at {x},{y} in {tile} tiles, {c}");
                 assert_tiled(&output, (w, h));
                 assert_identical(&read_image(&output), &img);
@@ -85,7 +80,7 @@ fn tiled_output_holds_the_input_pixels() {
     let img = random_rgba(9, 1, 2, 83, 77, Kind::Float, true);
     write_image(&input, &img, compression("piz"), LineOrder::Increasing);
     for strip in ["1", "20", "1000"] {
-        run_ok(&[
+        ok(&[
             "transcode",
             s(&input),
             "-o",
@@ -142,7 +137,7 @@ fn tiles_under_a_transparent_foreground_are_the_backgrounds_tiles() {
     let mut written = None;
     for strip in ["16", "40"] {
         let args = ["over", s(&a), s(&b), "-o", s(&out), "-q", "--tile", "16"];
-        run_ok(&[&args[..], &["--strip-rows", strip]].concat());
+        ok(&[&args[..], &["--strip-rows", strip]].concat());
         assert_identical(&read_image(&out), &reference);
         let (ours, theirs) = (tiles(&out), tiles(&b));
         let same: Vec<bool> = ours.iter().zip(&theirs).map(|(o, t)| o == t).collect();
@@ -158,13 +153,17 @@ fn tiles_under_a_transparent_foreground_are_the_backgrounds_tiles() {
          [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n\
          [[node]]\nname = \"out\"\nwrite = \"job.exr\"\ninputs = [\"comp\"]\ntile = \"16x16\"\n";
     std::fs::write(&job, text).unwrap();
-    run_ok(&["run", s(&job), "-q"]);
-    assert_eq!(tiles(&d.join("job.exr")), written.unwrap());
+    ok(&["run", s(&job), "-q"]);
+    let written = written.unwrap();
+    assert_eq!(tiles(&d.join("job.exr")), written);
+    // Without --tile the output is tiled as B is: the same file.
+    ok(&["over", s(&a), s(&b), "-o", s(&out), "-q"]);
+    assert_eq!(tiles(&out), written, "B's tiling followed");
     // A foreground window a tile row above B's: the output's tile rows are
     // B's one row down, its tiles renumbered.
     let taller = sparse(-16);
     write_encoded(&a, &taller, tiled(16));
-    run_ok(&["over", s(&a), s(&b), "-o", s(&out), "-q", "--tile", "16"]);
+    ok(&["over", s(&a), s(&b), "-o", s(&out), "-q", "--tile", "16"]);
     assert_identical(
         &read_image(&out),
         &reference_merge("over", &taller, &bg, false, 1.0, &[""]),
@@ -183,12 +182,12 @@ fn tiles_under_a_transparent_foreground_are_the_backgrounds_tiles() {
     // Other tiles than B's, or scanlines into tiles: nothing passes, and the
     // pixels are the same.
     for (input, tile) in [(&b, "32"), (&b, "16x32")] {
-        run_ok(&["over", s(&a), s(input), "-o", s(&out), "-q", "--tile", tile]);
+        ok(&["over", s(&a), s(input), "-o", s(&out), "-q", "--tile", tile]);
         assert_identical(&read_image(&out), &reference);
     }
     let scanlines = d.join("scanlines.exr");
     write_image(&scanlines, &bg, compression("zip"), LineOrder::Increasing);
-    run_ok(&[
+    ok(&[
         "over",
         s(&a),
         s(&scanlines),
@@ -200,6 +199,76 @@ fn tiles_under_a_transparent_foreground_are_the_backgrounds_tiles() {
     ]);
     assert_identical(&read_image(&out), &reference);
     assert!(tiles(&out).iter().zip(tiles(&b)).all(|(o, t)| *o != t));
+}
+
+/// Whether `path`'s first part is scanlines.
+fn is_scanlines(path: &Path) -> bool {
+    let file = ExrFile::open(path, None).unwrap();
+    matches!(file.header(0).blocks, BlockDescription::ScanLines)
+}
+
+#[test]
+fn the_output_is_tiled_as_the_background_is_unless_told() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (fg, bg) = (
+        random_rgba(4, 0, 0, 45, 33, Kind::Half, false),
+        random_rgba(5, 0, 0, 45, 33, Kind::Half, false),
+    );
+    let (a, b, out) = (d.join("a.exr"), d.join("b.exr"), d.join("out.exr"));
+    write_encoded(&a, &fg, tiled(8));
+    write_encoded(&b, &bg, tiled(16));
+    let reference = reference_merge("over", &fg, &bg, false, 1.0, &[""]);
+    // B's tiles, not A's; and a transcode keeps its input's.
+    ok(&["over", s(&a), s(&b), "-o", s(&out), "-q"]);
+    assert_tiled(&out, (16, 16));
+    assert_identical(&read_image(&out), &reference);
+    ok(&["transcode", s(&a), "-o", s(&out), "-q"]);
+    assert_tiled(&out, (8, 8));
+    // A scanline B gives scanlines under a tiled A.
+    let scanlines = d.join("scanlines.exr");
+    write_image(&scanlines, &bg, compression("zip"), LineOrder::Increasing);
+    ok(&["over", s(&a), s(&scanlines), "-o", s(&out), "-q"]);
+    assert!(is_scanlines(&out));
+    // --scanline and the job file's `scanline = true` write scanlines;
+    // --tile wins over the job's key.
+    ok(&["over", s(&a), s(&b), "-o", s(&out), "-q", "--scanline"]);
+    assert!(is_scanlines(&out));
+    assert_identical(&read_image(&out), &reference);
+    let job = d.join("over.toml");
+    let text =
+        "[[node]]\nname = \"a\"\nread = \"a.exr\"\n\n[[node]]\nname = \"b\"\nread = \"b.exr\"\n\n\
+         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"job.exr\"\ninputs = [\"comp\"]\nscanline = true\n";
+    std::fs::write(&job, text).unwrap();
+    ok(&["run", s(&job), "-q"]);
+    assert!(is_scanlines(&d.join("job.exr")));
+    ok(&["run", s(&job), "-q", "--tile", "4"]);
+    assert_tiled(&d.join("job.exr"), (4, 4));
+    let both = run(&[
+        "over",
+        s(&a),
+        s(&b),
+        "-o",
+        s(&out),
+        "--scanline",
+        "--tile",
+        "4",
+    ]);
+    assert_eq!(both.status.code(), Some(2), "--scanline with --tile");
+    // A mipmapped B: one level of its tile size.
+    if let Some(maketiled) = peer("exrmaketiled") {
+        let mip = d.join("mip.exr");
+        let args = [s(&scanlines), s(&mip)];
+        succeed(
+            std::process::Command::new(maketiled)
+                .args(["-m", "-t", "16", "16"])
+                .args(args),
+        );
+        ok(&["over", s(&a), s(&mip), "-o", s(&out), "-q"]);
+        assert_tiled(&out, (16, 16));
+        assert_identical(&read_image(&out), &reference);
+    }
 }
 
 #[test]
@@ -232,7 +301,7 @@ fn bad_tile_sizes_are_usage_errors() {
     // Nor does stitch join tiled files: rows 0-16 in tiles, 16-20 in
     // scanlines, of one 20x20 image.
     let (top, bottom) = (d.join("top.exr"), d.join("bottom.exr"));
-    run_ok(&[
+    ok(&[
         "transcode",
         s(&input),
         "-o",
@@ -242,8 +311,8 @@ fn bad_tile_sizes_are_usage_errors() {
         "0-16",
     ]);
     let tiled = d.join("tiled.exr");
-    run_ok(&["transcode", s(&top), "-o", s(&tiled), "-q", "--tile", "16"]);
-    run_ok(&[
+    ok(&["transcode", s(&top), "-o", s(&tiled), "-q", "--tile", "16"]);
+    ok(&[
         "transcode",
         s(&input),
         "-o",

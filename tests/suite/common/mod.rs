@@ -718,6 +718,12 @@ pub fn assert_identical(a: &Img, b: &Img) {
 }
 
 /// Runs `command` (a peer making a test file); panics with its stderr if it fails.
+/// Runs exrcomp with `args`, which must succeed.
+pub fn ok(args: &[&str]) {
+    let out = run(args);
+    assert!(out.status.success(), "exrcomp {args:?}: {}", stderr(&out));
+}
+
 pub fn succeed(command: &mut Command) -> Output {
     let out = command.output().expect("the command starts");
     assert!(
