@@ -507,20 +507,51 @@ pub fn write_template(path: &Path, text: &str) -> Result<()> {
         })
 }
 
-/// `frames` as one range `A-B` and its step: OpenCue and Deadline cut a
-/// job's frames into chunks themselves, giving a task its first and last
-/// frame, which name the chunk only when the frames are one stepped range.
-fn one_range(frames: &str, farm: &str) -> Result<(String, Option<String>)> {
-    let range = range_expression(&parse_frame_list(frames)?);
-    if range.contains(',') || !range[1..].contains('-') {
-        return Err(Error::usage(format!(
-            "{farm} takes one frame range, A-B or A-B:STEP (or A-BxSTEP), not {frames}"
-        )));
+/// Frames as one range and its step: OpenCue and Deadline cut a job's
+/// frames into chunks of `chunk` themselves, giving a task its first and
+/// last frame, which name the chunk only when the frames are one stepped
+/// range.
+struct SteppedRange {
+    range: String,
+    step: Option<String>,
+}
+
+impl SteppedRange {
+    fn new(frames: &str, chunk: usize, farm: &str) -> Result<Self> {
+        if chunk == 0 {
+            return Err(Error::usage("--chunk must be at least 1"));
+        }
+        let range = range_expression(&parse_frame_list(frames)?);
+        if range.contains(',') || !range[1..].contains('-') {
+            return Err(Error::usage(format!(
+                "{farm} takes one frame range, A-B or A-B:STEP (or A-BxSTEP), not {frames}"
+            )));
+        }
+        Ok(match range.split_once(':') {
+            Some((range, step)) => SteppedRange {
+                range: range.to_string(),
+                step: Some(step.to_string()),
+            },
+            None => SteppedRange { range, step: None },
+        })
     }
-    Ok(match range.split_once(':') {
-        Some((range, step)) => (range.to_string(), Some(step.to_string())),
-        None => (range, None),
-    })
+
+    /// The frames in the farms' syntax, `A-B` or `A-BxS`.
+    fn frames(&self) -> String {
+        match &self.step {
+            Some(step) => format!("{}x{step}", self.range),
+            None => self.range.clone(),
+        }
+    }
+
+    /// A chunk's `--frames` from the farm's tokens for its first and last
+    /// frame.
+    fn chunk(&self, start: &str, end: &str) -> String {
+        match &self.step {
+            Some(step) => format!("{start}-{end}:{step}"),
+            None => format!("{start}-{end}"),
+        }
+    }
 }
 
 /// `arg` as a POSIX shell reads it back: quoted unless it is plain.
@@ -544,28 +575,19 @@ pub fn opencue_outline(
     job: &FarmJob,
     needs: &Needs,
 ) -> Result<String> {
-    if job.chunk == 0 {
-        return Err(Error::usage("--chunk must be at least 1"));
-    }
-    let (range, step) = one_range(&job.frames, "OpenCue")?;
+    let frames = SteppedRange::new(&job.frames, job.chunk, "OpenCue")?;
     let mut line: Vec<String> = std::iter::once(exrcomp.to_string_lossy().as_ref())
         .chain(command.iter().map(String::as_str))
         .map(shell_quote)
         .collect();
     line.extend([
         "--frames".to_string(),
-        format!(
-            "#FRAME_START#-#FRAME_END#{}",
-            step.as_ref().map_or(String::new(), |s| format!(":{s}"))
-        ),
+        frames.chunk("#FRAME_START#", "#FRAME_END#"),
     ]);
     let name = format!("exrcomp-{}", command.first().map_or("job", String::as_str));
     let outline = serde_json::json!({
         "name": name,
-        "range": match &step {
-            Some(step) => format!("{range}x{step}"),
-            None => range,
-        },
+        "range": frames.frames(),
         "layers": [{
             "name": "exrcomp",
             "module": "outline.modules.shell.Shell",
@@ -601,10 +623,7 @@ pub fn deadline_job(
     needs: &Needs,
     description: &str,
 ) -> Result<DeadlineJob> {
-    if job.chunk == 0 {
-        return Err(Error::usage("--chunk must be at least 1"));
-    }
-    let (range, step) = one_range(&job.frames, "Deadline")?;
+    let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
     // Key=value lines: a value holds no line break; the CommandLine plugin
     // splits Arguments at spaces outside double quotes.
     let value = |text: &str| match text.contains(['\n', '\r']) {
@@ -630,10 +649,7 @@ pub fn deadline_job(
         .collect::<Result<Vec<_>>>()?;
     arguments.extend([
         "--frames".to_string(),
-        format!(
-            "<STARTFRAME>-<ENDFRAME>{}",
-            step.as_ref().map_or(String::new(), |s| format!(":{s}"))
-        ),
+        frames.chunk("<STARTFRAME>", "<ENDFRAME>"),
     ]);
     let mut info = vec![
         ("Plugin".to_string(), "CommandLine".to_string()),
@@ -642,13 +658,7 @@ pub fn deadline_job(
             format!("exrcomp {}", task.args.first().map_or("", String::as_str)),
         ),
         ("Comment".to_string(), value(description)?),
-        (
-            "Frames".to_string(),
-            match &step {
-                Some(step) => format!("{range}x{step}"),
-                None => range,
-            },
-        ),
+        ("Frames".to_string(), frames.frames()),
         ("ChunkSize".to_string(), job.chunk.to_string()),
     ];
     if let Some(&(at, _)) = task.files.iter().find(|(_, flow)| *flow == Flow::Out) {

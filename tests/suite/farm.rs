@@ -259,6 +259,47 @@ fn pyoutline() -> Option<std::path::PathBuf> {
     found.then_some(python)
 }
 
+/// The job spec Cuebot takes for the outline `job`, as OpenCue's own library
+/// loads and serialises it.
+fn cue_spec(python: &Path, job: &Path) -> String {
+    let script = "import sys, outline.loader, outline.cuerun\n\
+        from outline.backend import cue\n\
+        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
+        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
+    let out = Command::new(python)
+        .args(["-c", script])
+        .arg(job)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Runs the layer's command `cmd` for each chunk, its tokens replaced as
+/// RQD replaces them, through a shell as RQD runs it.
+fn run_cue_chunks(cmd: &str, chunks: &[(i64, i64)]) {
+    for (start, end) in chunks {
+        let line = cmd
+            .replace("#FRAME_START#", &start.to_string())
+            .replace("#FRAME_END#", &end.to_string());
+        let status = Command::new("sh").args(["-c", &line]).status().unwrap();
+        assert!(status.success(), "{line}");
+    }
+}
+
+/// The layer's command in a Cuebot job spec.
+fn cue_command(spec: &str) -> String {
+    spec.split("<cmd>")
+        .nth(1)
+        .and_then(|c| c.split("</cmd>").next())
+        .unwrap()
+        .to_string()
+}
+
 #[test]
 fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     let Some(python) = pyoutline() else {
@@ -290,21 +331,7 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     args.extend(["over", s(&fg), s(&bg), "-o", s(&out)]);
     ok(&args);
     // OpenCue's own library loads the outline and writes the job spec cuebot takes.
-    let script = "import sys, outline.loader, outline.cuerun\n\
-        from outline.backend import cue\n\
-        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
-        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
-    let out = Command::new(python)
-        .args(["-c", script])
-        .arg(p("job.json"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let spec = String::from_utf8_lossy(&out.stdout).into_owned();
+    let spec = cue_spec(&python, &p("job.json"));
     for part in [
         "<range>1-7</range>",
         "<chunk>3</chunk>",
@@ -313,20 +340,8 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
         assert!(spec.contains(part), "{part} not in\n{spec}");
     }
     // Each OpenCue frame chunk, its tokens replaced as RQD does, equals the local run.
-    let cmd = spec
-        .split("<cmd>")
-        .nth(1)
-        .and_then(|c| c.split("</cmd>").next())
-        .unwrap()
-        .to_string();
-    for (start, end) in [(1, 3), (4, 6), (7, 7)] {
-        let line = cmd
-            .replace("#FRAME_START#", &start.to_string())
-            .replace("#FRAME_END#", &end.to_string());
-        // RQD runs the command through a shell.
-        let status = Command::new("sh").args(["-c", &line]).status().unwrap();
-        assert!(status.success(), "{line}");
-    }
+    let cmd = cue_command(&spec);
+    run_cue_chunks(&cmd, &[(1, 3), (4, 6), (7, 7)]);
     local_over(d);
     for frame in 1..=7 {
         let name = format!("comp.{frame:04}.exr");
@@ -763,22 +778,16 @@ fn opencue_layers_get_service_cores_memory_and_checked_commands() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     plates(d);
-    let bad = farm_in(
-        d,
-        &[],
-        &["opencue", "--frames", "1-7", "-o", "bad.json"],
-        &["over", "fgg.####.exr", "bg.####.exr", "-o", "c.####.exr"],
-    );
-    assert_eq!(bad.status.code(), Some(3), "{}", stderr(&bad));
-    assert!(!d.join("bad.json").exists());
-    let list = farm_in(
-        d,
-        &[],
-        &["opencue", "--frames", "1,2,5", "-o", "bad.json"],
-        &["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"],
-    );
-    assert_eq!(list.status.code(), Some(2), "{}", stderr(&list));
-    assert!(!d.join("bad.json").exists());
+    for (frames, input, code) in [("1-7", "fgg.####.exr", 3), ("1,2,5", "fg.####.exr", 2)] {
+        let out = farm_in(
+            d,
+            &[],
+            &["opencue", "--frames", frames, "-o", "bad.json"],
+            &["over", input, "bg.####.exr", "-o", "c.####.exr"],
+        );
+        assert_eq!(out.status.code(), Some(code), "{}", stderr(&out));
+        assert!(!d.join("bad.json").exists());
+    }
     let out = farm_in(
         d,
         &[("EXRCOMP_TEST_SETTING", "x y")],
@@ -808,21 +817,7 @@ fn opencue_layers_get_service_cores_memory_and_checked_commands() {
     let Some(python) = pyoutline() else {
         return;
     };
-    let script = "import sys, outline.loader, outline.cuerun\n\
-        from outline.backend import cue\n\
-        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
-        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
-    let spec = Command::new(python)
-        .args(["-c", script])
-        .arg(d.join("jobs/cue.json"))
-        .output()
-        .unwrap();
-    assert!(
-        spec.status.success(),
-        "{}",
-        String::from_utf8_lossy(&spec.stderr)
-    );
-    let spec = String::from_utf8_lossy(&spec.stdout).into_owned();
+    let spec = cue_spec(&python, &d.join("jobs/cue.json"));
     for part in [
         "<range>1-7x2</range>".to_string(),
         "<chunk>2</chunk>".to_string(),
@@ -834,12 +829,7 @@ fn opencue_layers_get_service_cores_memory_and_checked_commands() {
     ] {
         assert!(spec.contains(&part), "{part} not in\n{spec}");
     }
-    let cmd = spec
-        .split("<cmd>")
-        .nth(1)
-        .and_then(|c| c.split("</cmd>").next())
-        .unwrap()
-        .to_string();
+    let cmd = cue_command(&spec);
     assert_eq!(cmd.matches("--resume").count(), 1, "{cmd}");
     assert_eq!(
         cmd.matches("-q").count() + cmd.matches("--quiet").count(),
@@ -850,13 +840,7 @@ fn opencue_layers_get_service_cores_memory_and_checked_commands() {
         cmd.contains(&format!("'{}/cue dir/c.####.exr'", s(d))),
         "{cmd}"
     );
-    for (start, end) in [(1, 3), (5, 7)] {
-        let line = cmd
-            .replace("#FRAME_START#", &start.to_string())
-            .replace("#FRAME_END#", &end.to_string());
-        let status = Command::new("sh").args(["-c", &line]).status().unwrap();
-        assert!(status.success(), "{line}");
-    }
+    run_cue_chunks(&cmd, &[(1, 3), (5, 7)]);
     local_over(d);
     for frame in 1..=7 {
         let name = format!("comp.{frame:04}.exr");
@@ -935,6 +919,26 @@ fn deadline_file(path: &Path, allowed: &[&str]) -> Vec<(String, String)> {
         .collect()
 }
 
+/// `farm deadline ARGS` of fg over bg into `output`, with `env`: its job
+/// info and plugin info (`JOB.job`, `JOB.plugin.job`), documented keys only.
+type Pairs = Vec<(String, String)>;
+fn deadline_over(d: &Path, env: &[(&str, &str)], args: &[&str], output: &str) -> (Pairs, Pairs) {
+    let args = [&["deadline"][..], args].concat();
+    let out = farm_in(
+        d,
+        env,
+        &args,
+        &["over", "fg.####.exr", "bg.####.exr", "-o", output],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let job = d.join(args.last().unwrap());
+    let plugin = job.with_extension("plugin.job");
+    (
+        deadline_file(&job, &DEADLINE_JOB_KEYS),
+        deadline_file(&plugin, &DEADLINE_COMMANDLINE_KEYS),
+    )
+}
+
 /// Arguments as the CommandLine plugin gives them to the executable:
 /// `<QUOTE>` a double quote, split at spaces outside quotes.
 fn deadline_arguments(line: &str) -> Vec<String> {
@@ -989,11 +993,10 @@ fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
         assert_eq!(out.status.code(), Some(2), "{command:?}: {}", stderr(&out));
         assert!(!d.join("bad.job").exists() && !d.join("bad.plugin.job").exists());
     }
-    let out = farm_in(
+    let (info, plugin) = deadline_over(
         d,
         &[("EXRCOMP_TEST_SETTING", "on")],
         &[
-            "deadline",
             "--threads",
             "1",
             "--frames",
@@ -1003,17 +1006,8 @@ fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
             "-o",
             "jobs/comp.job",
         ],
-        &[
-            "over",
-            "fg.####.exr",
-            "bg.####.exr",
-            "-o",
-            "dl out/c.%04d.exr",
-        ],
+        "dl out/c.%04d.exr",
     );
-    assert!(out.status.success(), "{}", stderr(&out));
-    let info = deadline_file(&d.join("jobs/comp.job"), &DEADLINE_JOB_KEYS);
-    let plugin = deadline_file(&d.join("jobs/comp.plugin.job"), &DEADLINE_COMMANDLINE_KEYS);
     let get = |pairs: &[(String, String)], key: &str| {
         pairs
             .iter()
@@ -1065,23 +1059,12 @@ fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
         );
     }
     // A stepped range: Deadline's own `x` syntax, each chunk's frames stepped.
-    let out = farm_in(
+    let (info, plugin) = deadline_over(
         d,
         &[],
-        &[
-            "deadline", "--frames", "1-7:2", "--chunk", "2", "-o", "step.job",
-        ],
-        &[
-            "over",
-            "fg.####.exr",
-            "bg.####.exr",
-            "-o",
-            "step/c.####.exr",
-        ],
+        &["--frames", "1-7:2", "--chunk", "2", "-o", "step.job"],
+        "step/c.####.exr",
     );
-    assert!(out.status.success(), "{}", stderr(&out));
-    let info = deadline_file(&d.join("step.job"), &DEADLINE_JOB_KEYS);
-    let plugin = deadline_file(&d.join("step.plugin.job"), &DEADLINE_COMMANDLINE_KEYS);
     assert_eq!(get(&info, "Frames"), "1-7x2");
     assert!(get(&plugin, "Arguments").ends_with("--frames <STARTFRAME>-<ENDFRAME>:2"));
 }
