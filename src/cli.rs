@@ -230,6 +230,16 @@ pub enum Farm {
     /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
     /// layer (frames A-B or A-B:STEP); see the README for submitting it.
     Opencue(FarmJob),
+    /// Deadline 10 job-info and plugin-info files for the CommandLine
+    /// plugin (`deadlinecommand JOBINFO PLUGININFO`): frames A-B or A-B:STEP.
+    Deadline(FarmJob),
+}
+
+impl Farm {
+    pub fn job_mut(&mut self) -> &mut FarmJob {
+        let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = self;
+        job
+    }
 }
 
 /// A local command to run on a farm, in frame chunks.
@@ -249,9 +259,15 @@ pub struct FarmJob {
     /// (implies --task-chunking).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
     pub target_runtime: Option<u32>,
+    /// OpenCue: the layer's service.
+    #[arg(long, default_value = "shell")]
+    pub service: String,
     /// Where the job is written.
     #[arg(value_hint = ValueHint::FilePath, short, long)]
     pub output: PathBuf,
+    /// Threads of each task (the global --threads), set by main.
+    #[arg(skip)]
+    pub threads: Option<usize>,
     /// The exrcomp command to run, without --frames (after `--`).
     #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
     pub command: Vec<String>,

@@ -1,13 +1,14 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
-use crate::cli::{Command, Farm, Invocation, LayerArgs, RunArgs};
+use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
 use crate::engine::graph::NodeId;
 use crate::engine::graph::{Graph, GraphBuilder, Node};
 use crate::engine::interrupt;
 use crate::engine::luminance_chroma;
+use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
-use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job, Source};
+use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Source};
 use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
@@ -30,36 +31,20 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 pub fn run(command: Command) -> Result<()> {
+    execute(command).map(drop)
+}
+
+/// Runs `command`; a dry run of a frame-writing command gives the most
+/// bytes any of its frames would hold at once (`memory_bound`).
+pub fn execute(command: Command) -> Result<Option<u64>> {
     match command {
         Command::Op(call) => operation(call),
         Command::Stitch { bands, output } => {
             FramePattern::output(&output.to_string_lossy())?;
             refuse_overwriting(bands.clone(), [(None, output.clone())])?;
-            crate::io::stitch::stitch(&bands, &output)
+            crate::io::stitch::stitch(&bands, &output).map(|()| None)
         }
-        Command::Farm { farm } => {
-            let (Farm::Openjd(job) | Farm::Opencue(job)) = &farm;
-            let cwd = working_folder()?;
-            let task = farm::task_command(&job.command, &job.frames, &cwd)?;
-            let exrcomp = farm::this_exrcomp()?;
-            match &farm {
-                Farm::Openjd(_) => {
-                    let tasks = farm::Tasks::new(
-                        &job.frames,
-                        job.chunk,
-                        job.task_chunking,
-                        job.target_runtime,
-                    )?;
-                    let openjd = farm::openjd_template(&exrcomp, &task, &tasks);
-                    farm::write_template(&farm::values_path(&job.output), &openjd.values)?;
-                    farm::write_template(&job.output, &openjd.template)
-                }
-                Farm::Opencue(_) => farm::write_template(
-                    &job.output,
-                    &farm::opencue_outline(&exrcomp, &task.args, &job.frames, job.chunk)?,
-                ),
-            }
-        }
+        Command::Farm { farm } => farm::write_job(&farm, &working_folder()?).map(|()| None),
         Command::Run { job, output, run } => {
             let mut plan = crate::job::load(&job)?;
             if let Some(output) = output {
@@ -138,15 +123,15 @@ pub fn run(command: Command) -> Result<()> {
             let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
             run_job(&job, "transcode", &run, summary)
         }
-        Command::Info { files, json } => info(&files, json),
-        Command::Bench(args) => crate::bench::bench(&args),
+        Command::Info { files, json } => info(&files, json).map(|()| None),
+        Command::Bench(args) => crate::bench::bench(&args).map(|()| None),
         Command::Demo {
             dir,
             length,
             width,
             height,
             run,
-        } => demo(&dir, length, width, height, &run),
+        } => demo(&dir, length, width, height, &run).map(|()| None),
         Command::Generate {
             output,
             kind,
@@ -185,7 +170,7 @@ fn selection(layers: &LayerArgs) -> Selection {
 
 /// An operation's job: its graph built from its declaration, after a first
 /// pass over the inputs for what it measures (none in a dry run).
-fn operation(call: Invocation) -> Result<()> {
+fn operation(call: Invocation) -> Result<Option<u64>> {
     let op = call.op;
     let mut args = Args {
         op: op.name,
@@ -225,7 +210,7 @@ fn add(
     (op.build)(&args, graph, inputs).map_err(Error::usage)
 }
 
-fn working_folder() -> Result<PathBuf> {
+pub fn working_folder() -> Result<PathBuf> {
     std::env::current_dir().map_err(|e| Error::usage(format!("no working folder: {e}")))
 }
 
@@ -450,20 +435,28 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 }
 
 /// Runs `job`, prints its summary, and turns failed frames or an
-/// interruption into the run's error (and exit code).
-fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
+/// interruption into the run's error (and exit code). A dry run plans every
+/// frame and gives the most bytes one of them holds at once.
+fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Option<u64>> {
     let (reads, writes) = job.files();
     refuse_overwriting(reads, writes)?;
     if run.dry_run {
+        let mut bound = 0;
+        for sources in &job.frames {
+            for plan in plan_parts(job, sources)? {
+                bound = memory_bound(&plan, &job.graph).max(bound);
+            }
+        }
         if !run.quiet {
             print!("{}", dry_run_listing(job, run.json));
             eprintln!(
-                "{label}: would write {} to {}",
+                "{label}: would write {} to {}, holding at most {} MiB at once",
                 count(job.frames.len(), "frame"),
-                job.output.display()
+                job.output.display(),
+                bound.div_ceil(1 << 20)
             );
         }
-        return Ok(());
+        return Ok(Some(bound));
     }
     let (report, summary) = run_with_progress(job, label, run, summary)?;
     planted_delay();
@@ -485,7 +478,7 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()
             ),
         ));
     }
-    Ok(())
+    Ok(None)
 }
 
 /// Test builds only: `EXRCOMP_TEST_DELAY=SECONDS` makes a run that much
@@ -775,7 +768,7 @@ fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -
     let defocused = add(&mut graph, &defocus::DEFOCUS, &defocus, &nodes[1..])?;
     add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
     let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &run)?;
-    run_job(&job, "demo", &run, summary)
+    run_job(&job, "demo", &run, summary).map(drop)
 }
 
 /// `n things` or `1 thing`.

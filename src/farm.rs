@@ -1,12 +1,13 @@
 //! Farm jobs: a local command split into frame chunks, each task running
 //! exrcomp with `--frames CHUNK --resume`, so a retried task redoes only the
-//! frames it has not finished. Open Job Description templates and OpenCue
-//! outlines.
+//! frames it has not finished. Open Job Description templates, OpenCue
+//! outlines and Deadline job files.
 
-use crate::cli::Cli;
+use crate::cli::{Cli, Farm, FarmJob};
 use crate::error::{Error, Result};
 use crate::io::sequence::parse_frame_list;
 use clap::{CommandFactory, Parser, ValueHint};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Most tasks an OpenJD task parameter may list.
@@ -107,13 +108,38 @@ fn argv(args: &[String]) -> impl Iterator<Item = String> + '_ {
     std::iter::once("exrcomp".to_string()).chain(args.iter().cloned())
 }
 
+/// What each task of a job needs of its worker.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Needs {
+    /// Threads of each task (its `--threads`).
+    pub threads: usize,
+    /// Bytes a task holds at most: the engine's memory bound of its largest
+    /// frame at that many threads (specs/architecture.md).
+    pub memory: u64,
+    /// The submitter's `EXRCOMP_*` settings, which tasks run with.
+    pub environment: BTreeMap<String, String>,
+}
+
+impl Needs {
+    /// The memory bound in whole MiB, as the farms ask for memory.
+    pub fn memory_mib(&self) -> u64 {
+        self.memory.div_ceil(1 << 20)
+    }
+}
+
 /// `command` parsed as exrcomp parses it, its file names made absolute
 /// against `cwd` (a task runs in a session folder of the farm's), and run as
 /// a dry run over all `frames`, so that no template is written for a command
 /// that would fail on every task (a typo, a missing input, an output that is
 /// an input). The arguments every task runs, but for `--frames`: with
-/// `--resume` and `--quiet` once.
-pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<TaskCommand> {
+/// `--resume`, `--quiet` and `--threads` once (COMMAND's own, else
+/// `threads`, else this machine's cores), and what each task needs.
+pub fn task_command(
+    command: &[String],
+    frames: &str,
+    cwd: &Path,
+    threads: Option<usize>,
+) -> Result<(TaskCommand, Needs)> {
     if command
         .iter()
         .any(|a| a == "--frames" || a.starts_with("--frames="))
@@ -139,12 +165,82 @@ pub fn task_command(command: &[String], frames: &str, cwd: &Path) -> Result<Task
             task.args.push(format!("--{flag}"));
         }
     }
+    // Memory grows with the threads (strips give each a block): a task runs
+    // with the threads its memory is computed for.
+    let threads = match sub.try_get_one::<usize>("threads").ok().flatten() {
+        Some(&given) => given,
+        None => {
+            let threads = threads.unwrap_or_else(rayon::current_num_threads);
+            task.args.extend(["--threads".into(), threads.to_string()]);
+            threads
+        }
+    };
     let check = argv(&task.args)
         .chain(["--frames".into(), frames.into(), "--dry-run".into()])
         .collect::<Vec<_>>();
     let cli = Cli::try_parse_from(check).map_err(|e| Error::usage(e.to_string()))?;
-    crate::commands::run(cli.command)?;
-    Ok(task)
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Error::internal(format!("cannot start {threads} threads: {e}")))?;
+    let memory = pool.install(|| crate::commands::execute(cli.command))?;
+    let needs = Needs {
+        threads,
+        memory: memory.expect("a frame-writing command's dry run gives its bound"),
+        environment: std::env::vars()
+            .filter(|(name, _)| name.starts_with("EXRCOMP_"))
+            .collect(),
+    };
+    Ok((task, needs))
+}
+
+/// Writes the job `farm` asks for: the command checked over all its frames
+/// first, nothing written if it would fail.
+pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
+    let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = farm;
+    let (task, needs) = task_command(&job.command, &job.frames, cwd, job.threads)?;
+    let exrcomp = this_exrcomp()?;
+    match farm {
+        Farm::Openjd(_) => {
+            let tasks = Tasks::new(
+                &job.frames,
+                job.chunk,
+                job.task_chunking,
+                job.target_runtime,
+            )?;
+            let openjd =
+                openjd_template(&exrcomp, &task, &tasks, &needs, &description(job, &needs));
+            write_template(&beside(&job.output, "params.json"), &openjd.values)?;
+            write_template(&job.output, &openjd.template)
+        }
+        Farm::Opencue(_) => write_template(
+            &job.output,
+            &opencue_outline(&exrcomp, &task.args, job, &needs)?,
+        ),
+        Farm::Deadline(_) => {
+            let files = deadline_job(&exrcomp, &task, job, &needs, &description(job, &needs))?;
+            write_template(&beside(&job.output, "plugin.job"), &files.plugin_info)?;
+            write_template(&job.output, &files.job_info)
+        }
+    }
+}
+
+/// What the job does and needs, for a render manager's view of it.
+fn description(job: &FarmJob, needs: &Needs) -> String {
+    let mut text = format!(
+        "exrcomp {}: frames {} in chunks of {}; each task: --threads {}, at most {} MiB",
+        job.command.join(" "),
+        job.frames,
+        job.chunk,
+        needs.threads,
+        needs.memory_mib()
+    );
+    // OpenJD's descriptions hold 2,048 characters, no control characters.
+    text.retain(|c| !c.is_control());
+    if let Some((at, _)) = text.char_indices().nth(2048) {
+        text.truncate(at);
+    }
+    text
 }
 
 /// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that
@@ -174,6 +270,20 @@ fn split_joined_values(command: &[String]) -> Vec<String> {
 /// JSON quoting is valid YAML quoting: every string goes out quoted.
 fn quote(text: &str) -> String {
     serde_json::Value::String(text.to_string()).to_string()
+}
+
+/// `text` for a format string of a template: quoted, or when it holds `{{`
+/// (which would open an expression) through a STRING job parameter `name`
+/// whose default it is, a value OpenJD does not read as a format string.
+fn literal(parameters: &mut Vec<String>, name: String, text: &str) -> String {
+    if !text.contains("{{") {
+        return quote(text);
+    }
+    parameters.push(format!(
+        "- name: {name}\n\x20 type: STRING\n\x20 default: {}\n",
+        quote(text)
+    ));
+    quote(&format!("{{{{Param.{name}}}}}"))
 }
 
 /// How an OpenJD job splits its frames into tasks.
@@ -238,8 +348,16 @@ pub struct OpenJdJob {
 /// default, so their values go in `values`. An argument that holds `{{` goes
 /// through a STRING job parameter, whose value is not a format string. With
 /// scheduler chunking, `Frames` and `ChunkSize` are job parameters too, the
-/// given values their defaults.
-pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> OpenJdJob {
+/// given values their defaults. The step asks for the task's threads and
+/// memory bound (`hostRequirements`), and its environment carries the
+/// submitter's `EXRCOMP_*` settings.
+pub fn openjd_template(
+    exrcomp: &Path,
+    task: &TaskCommand,
+    tasks: &Tasks,
+    needs: &Needs,
+    description: &str,
+) -> OpenJdJob {
     let command = &task.args;
     let name = format!("exrcomp {}", command.first().map_or("", String::as_str));
     let mut parameters = Vec::new();
@@ -268,17 +386,27 @@ pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> Ope
                 inputs += 1;
                 path(&mut parameters, format!("Input{inputs}"), arg, "IN")
             }
-            None if arg.contains("{{") => {
-                let name = format!("Arg{i}");
-                parameters.push(format!(
-                    "- name: {name}\n\x20 type: STRING\n\x20 default: {}\n",
-                    quote(arg)
-                ));
-                quote(&format!("{{{{Param.{name}}}}}"))
-            }
-            None => quote(arg),
+            None => literal(&mut parameters, format!("Arg{i}"), arg),
         });
     }
+    let environment = match needs.environment.is_empty() {
+        true => String::new(),
+        false => format!(
+            "\x20 stepEnvironments:\n\
+             \x20 - name: ExrcompSettings\n\
+             \x20   description: \"The submitter's EXRCOMP_* settings\"\n\
+             \x20   variables:\n{}",
+            needs
+                .environment
+                .iter()
+                .enumerate()
+                .map(|(i, (name, value))| format!(
+                    "\x20     {name}: {}\n",
+                    literal(&mut parameters, format!("Env{i}"), value)
+                ))
+                .collect::<String>()
+        ),
+    };
     args.extend(["--frames", "{{Task.Param.Frames}}"].map(quote));
     let (extensions, task_parameter) = match tasks {
         Tasks::Listed(chunks) => (
@@ -325,6 +453,7 @@ pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> Ope
         "specificationVersion: jobtemplate-2023-09\n\
          {extensions}\
          name: {name}\n\
+         description: {description}\n\
          parameterDefinitions:\n\
          {parameters}\
          steps:\n\
@@ -333,12 +462,22 @@ pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> Ope
          \x20   taskParameterDefinitions:\n\
          \x20   - name: Frames\n\
          {task_parameter}\
+         \x20 hostRequirements:\n\
+         \x20   amounts:\n\
+         \x20   - name: amount.worker.vcpu\n\
+         \x20     min: {threads}\n\
+         \x20   - name: amount.worker.memory\n\
+         \x20     min: {memory}\n\
+         {environment}\
          \x20 script:\n\
          \x20   actions:\n\
          \x20     onRun:\n\
          \x20       command: {executable}\n\
          \x20       args: [{args}]\n",
         name = quote(&name),
+        description = quote(description),
+        threads = needs.threads,
+        memory = needs.memory_mib(),
         parameters = parameters.concat(),
         args = args.join(", "),
     );
@@ -346,11 +485,12 @@ pub fn openjd_template(exrcomp: &Path, task: &TaskCommand, tasks: &Tasks) -> Ope
     OpenJdJob { template, values }
 }
 
-/// Where an OpenJD job's parameter values go: beside its template, `JOB.yaml`
-/// giving `JOB.params.json`.
-pub fn values_path(template: &Path) -> PathBuf {
-    let stem = template.file_stem().unwrap_or_default().to_string_lossy();
-    template.with_file_name(format!("{stem}.params.json"))
+/// A file written beside a job's: `JOB.yaml` and `params.json` give
+/// `JOB.params.json` (an OpenJD job's parameter values), `JOB.job` and
+/// `plugin.job` give `JOB.plugin.job` (a Deadline job's plugin info).
+pub fn beside(job: &Path, suffix: &str) -> PathBuf {
+    let stem = job.file_stem().unwrap_or_default().to_string_lossy();
+    job.with_file_name(format!("{stem}.{suffix}"))
 }
 
 /// Writes `text` to `path` under a temporary name, renamed when complete.
@@ -367,47 +507,201 @@ pub fn write_template(path: &Path, text: &str) -> Result<()> {
         })
 }
 
+/// Frames as one range and its step: OpenCue and Deadline cut a job's
+/// frames into chunks of `chunk` themselves, giving a task its first and
+/// last frame, which name the chunk only when the frames are one stepped
+/// range.
+struct SteppedRange {
+    range: String,
+    step: Option<String>,
+}
+
+impl SteppedRange {
+    fn new(frames: &str, chunk: usize, farm: &str) -> Result<Self> {
+        if chunk == 0 {
+            return Err(Error::usage("--chunk must be at least 1"));
+        }
+        let range = range_expression(&parse_frame_list(frames)?);
+        if range.contains(',') || !range[1..].contains('-') {
+            return Err(Error::usage(format!(
+                "{farm} takes one frame range, A-B or A-B:STEP (or A-BxSTEP), not {frames}"
+            )));
+        }
+        Ok(match range.split_once(':') {
+            Some((range, step)) => SteppedRange {
+                range: range.to_string(),
+                step: Some(step.to_string()),
+            },
+            None => SteppedRange { range, step: None },
+        })
+    }
+
+    /// The frames in the farms' syntax, `A-B` or `A-BxS`.
+    fn frames(&self) -> String {
+        match &self.step {
+            Some(step) => format!("{}x{step}", self.range),
+            None => self.range.clone(),
+        }
+    }
+
+    /// A chunk's `--frames` from the farm's tokens for its first and last
+    /// frame.
+    fn chunk(&self, start: &str, end: &str) -> String {
+        match &self.step {
+            Some(step) => format!("{start}-{end}:{step}"),
+            None => format!("{start}-{end}"),
+        }
+    }
+}
+
+/// `arg` as a POSIX shell reads it back: quoted unless it is plain.
+fn shell_quote(arg: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "_-./:=,+@%".contains(c);
+    match !arg.is_empty() && arg.chars().all(plain) {
+        true => arg.to_string(),
+        false => format!("'{}'", arg.replace('\'', r"'\''")),
+    }
+}
+
 /// An OpenCue outline in the JSON form PyOutline loads
 /// (`outline.loader.load_json`): one Shell layer over the frame range,
-/// chunked, each frame chunk running `--frames #FRAME_START#-#FRAME_END#`.
-/// OpenCue ranges are `A-B` or `A-BxS`: other frame lists are refused.
+/// chunked, each frame chunk running `--frames #FRAME_START#-#FRAME_END#`
+/// (a shell command, its arguments quoted), on the layer's service with the
+/// task's threads as cores, its memory bound as memory, and the submitter's
+/// `EXRCOMP_*` settings as its environment.
 pub fn opencue_outline(
     exrcomp: &Path,
     command: &[String],
-    frames: &str,
-    chunk: usize,
+    job: &FarmJob,
+    needs: &Needs,
 ) -> Result<String> {
-    if chunk == 0 {
-        return Err(Error::usage("--chunk must be at least 1"));
-    }
-    let range = range_expression(&parse_frame_list(frames)?);
-    let (cue_range, chunk_frames) = match range.split_once(':') {
-        _ if range.contains(',') || !range[1..].contains('-') => {
-            return Err(Error::usage(
-                "OpenCue takes one frame range, A-B or A-BxSTEP",
-            ))
-        }
-        Some((range, step)) => (
-            format!("{range}x{step}"),
-            format!("#FRAME_START#-#FRAME_END#:{step}"),
-        ),
-        None => (range.clone(), "#FRAME_START#-#FRAME_END#".to_string()),
-    };
-    let mut args = vec![exrcomp.to_string_lossy().into_owned()];
-    args.extend(command.iter().cloned());
-    args.extend(["--frames".to_string(), chunk_frames]);
+    let frames = SteppedRange::new(&job.frames, job.chunk, "OpenCue")?;
+    let mut line: Vec<String> = std::iter::once(exrcomp.to_string_lossy().as_ref())
+        .chain(command.iter().map(String::as_str))
+        .map(shell_quote)
+        .collect();
+    line.extend([
+        "--frames".to_string(),
+        frames.chunk("#FRAME_START#", "#FRAME_END#"),
+    ]);
     let name = format!("exrcomp-{}", command.first().map_or("job", String::as_str));
     let outline = serde_json::json!({
         "name": name,
-        "range": cue_range,
+        "range": frames.frames(),
         "layers": [{
             "name": "exrcomp",
             "module": "outline.modules.shell.Shell",
-            "command": args,
-            "chunk": chunk,
+            "command": line.join(" "),
+            "chunk": job.chunk,
+            "service": job.service,
+            "cores": needs.threads,
+            "memory": format!("{}m", needs.memory_mib()),
+            "env": needs.environment,
         }],
     });
     Ok(serde_json::to_string_pretty(&outline).expect("JSON values serialise") + "\n")
+}
+
+/// A Deadline job: its job-info and plugin-info files.
+pub struct DeadlineJob {
+    pub job_info: String,
+    pub plugin_info: String,
+}
+
+/// Deadline 10 job files for the CommandLine plugin, which
+/// `deadlinecommand JOBINFO PLUGININFO` submits: the frames (`A-B` or
+/// `A-BxS`) in chunks of `ChunkSize`, each task running the command with
+/// `--frames <STARTFRAME>-<ENDFRAME>`; the output's folder and file name (as
+/// `####`) for the Monitor; the submitter's `EXRCOMP_*` settings as the job's
+/// environment. Deadline has no keys for a task's cores and memory: they go
+/// in the comment and as extra info (`exrcomp.threads`,
+/// `exrcomp.memory_mib`) for the farm's groups and limits.
+pub fn deadline_job(
+    exrcomp: &Path,
+    task: &TaskCommand,
+    job: &FarmJob,
+    needs: &Needs,
+    description: &str,
+) -> Result<DeadlineJob> {
+    let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
+    // Key=value lines: a value holds no line break; the CommandLine plugin
+    // splits Arguments at spaces outside double quotes.
+    let value = |text: &str| match text.contains(['\n', '\r']) {
+        true => Err(Error::usage(format!(
+            "{text:?} holds a line break, which a Deadline job file cannot carry"
+        ))),
+        false => Ok(text.to_string()),
+    };
+    let argument = |arg: &str| match (
+        arg.contains('"'),
+        arg.is_empty() || arg.contains(char::is_whitespace),
+    ) {
+        (true, _) => Err(Error::usage(format!(
+            "{arg:?} holds a double quote, which Deadline's Arguments cannot carry"
+        ))),
+        (false, true) => value(&format!("<QUOTE>{arg}<QUOTE>")),
+        (false, false) => value(arg),
+    };
+    let mut arguments = task
+        .args
+        .iter()
+        .map(|a| argument(a))
+        .collect::<Result<Vec<_>>>()?;
+    arguments.extend([
+        "--frames".to_string(),
+        frames.chunk("<STARTFRAME>", "<ENDFRAME>"),
+    ]);
+    let mut info = vec![
+        ("Plugin".to_string(), "CommandLine".to_string()),
+        (
+            "Name".to_string(),
+            format!("exrcomp {}", task.args.first().map_or("", String::as_str)),
+        ),
+        ("Comment".to_string(), value(description)?),
+        ("Frames".to_string(), frames.frames()),
+        ("ChunkSize".to_string(), job.chunk.to_string()),
+    ];
+    if let Some(&(at, _)) = task.files.iter().find(|(_, flow)| *flow == Flow::Out) {
+        let output = Path::new(&task.args[at]);
+        let pattern = crate::io::sequence::FramePattern::parse(&task.args[at])?;
+        let name = Path::new(&pattern.display())
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let folder = output.parent().unwrap_or(Path::new("/"));
+        info.push(("OutputDirectory0".into(), value(&folder.to_string_lossy())?));
+        info.push(("OutputFilename0".into(), value(&name)?));
+    }
+    for (i, (name, setting)) in needs.environment.iter().enumerate() {
+        info.push((
+            format!("EnvironmentKeyValue{i}"),
+            value(&format!("{name}={setting}"))?,
+        ));
+    }
+    info.push((
+        "ExtraInfoKeyValue0".into(),
+        format!("exrcomp.threads={}", needs.threads),
+    ));
+    info.push((
+        "ExtraInfoKeyValue1".into(),
+        format!("exrcomp.memory_mib={}", needs.memory_mib()),
+    ));
+    let lines = |pairs: &[(String, String)]| {
+        pairs
+            .iter()
+            .map(|(key, value)| format!("{key}={value}\n"))
+            .collect::<String>()
+    };
+    let plugin = [
+        ("Executable".to_string(), value(&exrcomp.to_string_lossy())?),
+        ("Arguments".to_string(), arguments.join(" ")),
+        ("Shell".to_string(), "default".to_string()),
+        ("ShellExecute".to_string(), "False".to_string()),
+    ];
+    Ok(DeadlineJob {
+        job_info: lines(&info),
+        plugin_info: lines(&plugin),
+    })
 }
 
 /// This executable, for the template's command.
@@ -436,7 +730,12 @@ mod tests {
             files: vec![(1, Flow::In), (5, Flow::Out)],
         };
         let tasks = Tasks::new("1-4", 2, false, None).unwrap();
-        let job = openjd_template(Path::new("/bin/exrcomp"), &task, &tasks);
+        let needs = Needs {
+            threads: 2,
+            memory: 1,
+            environment: BTreeMap::new(),
+        };
+        let job = openjd_template(Path::new("/bin/exrcomp"), &task, &tasks, &needs, "d");
         let args = r#"args: ["over", "{{Param.Input1}}", "--layer", "{{Param.Arg3}}", "-o", "{{Param.Output}}", "--frames", "{{Task.Param.Frames}}"]"#;
         assert!(job.template.contains(args), "{}", job.template);
         assert!(job
@@ -451,7 +750,7 @@ mod tests {
             serde_json::json!({"Exrcomp": "/bin/exrcomp", "Input1": "/s/a{{x}}.exr", "Output": "/s/o.exr"})
         );
         assert_eq!(
-            values_path(Path::new("a/job.yaml")),
+            beside(Path::new("a/job.yaml"), "params.json"),
             Path::new("a/job.params.json")
         );
     }

@@ -8,6 +8,10 @@ fn main() {
     if let exrcomp::cli::Command::Bench(bench) = &mut cli.command {
         bench.threads = cli.threads;
     }
+    // A farm job's tasks get them too.
+    if let exrcomp::cli::Command::Farm { farm } = &mut cli.command {
+        farm.job_mut().threads = cli.threads;
+    }
     exrcomp::engine::interrupt::install();
     if let Some(threads) = cli.threads {
         // Only fails if the pool exists already, which it cannot here.

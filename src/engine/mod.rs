@@ -7,6 +7,7 @@ pub mod encode;
 pub mod graph;
 pub mod interrupt;
 pub mod luminance_chroma;
+pub mod memory_bound;
 pub mod passthrough;
 pub mod pipeline;
 pub mod plan;

@@ -39,9 +39,9 @@ fn plates(d: &Path) {
     }
 }
 
-/// `openjd ARGS` in `cwd`; a `run` gets the job's parameter values, which
-/// exrcomp writes beside the template (`JOB.params.json`).
-fn openjd(openjd: &Path, args: &[&str], cwd: &Path) {
+/// `openjd ARGS` in `cwd`, its output; a `run` gets the job's parameter
+/// values, which exrcomp writes beside the template (`JOB.params.json`).
+fn openjd(openjd: &Path, args: &[&str], cwd: &Path) -> String {
     let mut args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
     if args[0] == "run" {
         args.extend([
@@ -60,6 +60,7 @@ fn openjd(openjd: &Path, args: &[&str], cwd: &Path) {
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
+    String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
 /// The parameter values of the OpenJD job `template`.
@@ -258,6 +259,47 @@ fn pyoutline() -> Option<std::path::PathBuf> {
     found.then_some(python)
 }
 
+/// The job spec Cuebot takes for the outline `job`, as OpenCue's own library
+/// loads and serialises it.
+fn cue_spec(python: &Path, job: &Path) -> String {
+    let script = "import sys, outline.loader, outline.cuerun\n\
+        from outline.backend import cue\n\
+        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
+        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
+    let out = Command::new(python)
+        .args(["-c", script])
+        .arg(job)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Runs the layer's command `cmd` for each chunk, its tokens replaced as
+/// RQD replaces them, through a shell as RQD runs it.
+fn run_cue_chunks(cmd: &str, chunks: &[(i64, i64)]) {
+    for (start, end) in chunks {
+        let line = cmd
+            .replace("#FRAME_START#", &start.to_string())
+            .replace("#FRAME_END#", &end.to_string());
+        let status = Command::new("sh").args(["-c", &line]).status().unwrap();
+        assert!(status.success(), "{line}");
+    }
+}
+
+/// The layer's command in a Cuebot job spec.
+fn cue_command(spec: &str) -> String {
+    spec.split("<cmd>")
+        .nth(1)
+        .and_then(|c| c.split("</cmd>").next())
+        .unwrap()
+        .to_string()
+}
+
 #[test]
 fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     let Some(python) = pyoutline() else {
@@ -276,6 +318,8 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     let mut args = vec![
         "farm",
         "opencue",
+        "--threads",
+        "1",
         "--frames",
         "1-7",
         "--chunk",
@@ -287,43 +331,17 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     args.extend(["over", s(&fg), s(&bg), "-o", s(&out)]);
     ok(&args);
     // OpenCue's own library loads the outline and writes the job spec cuebot takes.
-    let script = "import sys, outline.loader, outline.cuerun\n\
-        from outline.backend import cue\n\
-        ol = outline.loader.load_json(open(sys.argv[1]).read())\n\
-        print(cue.serialize_simple(outline.cuerun.OutlineLauncher(ol, show='test', shot='test', user='artist')))\n";
-    let out = Command::new(python)
-        .args(["-c", script])
-        .arg(p("job.json"))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let spec = String::from_utf8_lossy(&out.stdout).into_owned();
+    let spec = cue_spec(&python, &p("job.json"));
     for part in [
         "<range>1-7</range>",
         "<chunk>3</chunk>",
-        "--resume --quiet --frames #FRAME_START#-#FRAME_END#</cmd>",
+        "--resume --quiet --threads 1 --frames #FRAME_START#-#FRAME_END#</cmd>",
     ] {
         assert!(spec.contains(part), "{part} not in\n{spec}");
     }
     // Each OpenCue frame chunk, its tokens replaced as RQD does, equals the local run.
-    let cmd = spec
-        .split("<cmd>")
-        .nth(1)
-        .and_then(|c| c.split("</cmd>").next())
-        .unwrap()
-        .to_string();
-    for (start, end) in [(1, 3), (4, 6), (7, 7)] {
-        let line = cmd
-            .replace("#FRAME_START#", &start.to_string())
-            .replace("#FRAME_END#", &end.to_string());
-        let words: Vec<&str> = line.split_whitespace().collect();
-        let status = Command::new(words[0]).args(&words[1..]).status().unwrap();
-        assert!(status.success(), "{line}");
-    }
+    let cmd = cue_command(&spec);
+    run_cue_chunks(&cmd, &[(1, 3), (4, 6), (7, 7)]);
     local_over(d);
     for frame in 1..=7 {
         let name = format!("comp.{frame:04}.exr");
@@ -507,9 +525,11 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         given.contains(&format!("\"Output\": \"{}\"", s(&output))),
         "{given}"
     );
-    assert_eq!(template.matches("--resume").count(), 1, "{template}");
+    // In the task's arguments (the description quotes the command as given).
+    let args = template.split("args: [").nth(1).unwrap();
+    assert_eq!(args.matches("--resume").count(), 1, "{template}");
     assert_eq!(
-        template.matches("\"-q\"").count() + template.matches("--quiet").count(),
+        args.matches("\"-q\"").count() + args.matches("--quiet").count(),
         1
     );
     openjd(&openjd_cli, &["check", "jobs/a/job.yaml"], d);
@@ -611,4 +631,440 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
     );
     assert!(d.join("c/p.2000.exr").exists() && d.join("c/p.1995.exr").exists());
     assert!(!d.join("c/p.1994.exr").exists());
+}
+
+/// `exrcomp farm FARM ARGS -- COMMAND` in `d` with `env` set; its output.
+fn farm_in(
+    d: &Path,
+    env: &[(&str, &str)],
+    args: &[&str],
+    command: &[&str],
+) -> std::process::Output {
+    exrcomp()
+        .args(["farm"])
+        .args(args)
+        .arg("--")
+        .args(command)
+        .envs(env.iter().copied())
+        .current_dir(d)
+        .output()
+        .unwrap()
+}
+
+/// The `min` of the OpenJD amount `name` in `template`.
+fn amount(template: &str, name: &str) -> u64 {
+    let at = template
+        .find(&format!("- name: {name}\n"))
+        .unwrap_or_else(|| panic!("no {name} in {template}"));
+    let rest = &template[at..];
+    let min = rest.find("min: ").unwrap() + 5;
+    rest[min..].lines().next().unwrap().trim().parse().unwrap()
+}
+
+/// The memory bound of specs/architecture.md worked by hand, in MiB, for
+/// one frame of `over` of the generated fg (half RGBA, float Z and vectors:
+/// 20 bytes a pixel) and bg (12 bytes, as the result), W wide, strips of S
+/// rows, ZIP blocks of 16 lines: both inputs and the merge alive at once,
+/// none with a halo.
+fn over_bound_by_hand(w: u64, s: u64) -> u64 {
+    let (l, fg, bg) = (16, 20, 12);
+    let decode = w * (fg + bg) * (3 * (s + 2 * l) + 2 * s);
+    let windows = w * s * (fg + bg + bg);
+    let encode = 5 * s * w * bg;
+    (decode + windows + encode + (1 << 20) + (10 << 20)).div_ceil(1 << 20)
+}
+
+/// OpenJD's host requirements: the task's threads as vcpus and the
+/// engine's memory bound in MiB (worked by hand, and above a run's peak);
+/// the threads reach the task's command once; the submitter's EXRCOMP_*
+/// settings are the step's environment, `{{` and all; a description says
+/// what the job does and needs.
+#[test]
+fn openjd_jobs_ask_for_their_threads_and_memory_and_carry_the_settings() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, kind) in [("fg", "fg"), ("bg", "bg")] {
+        generate(
+            &d.join(format!("{name}.####.exr")),
+            kind,
+            (1024, 256),
+            &["--frames", "1-2"],
+        );
+    }
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "out/c.####.exr"];
+    let settings = [("EXRCOMP_TEST_SETTING", "a{{b}}")];
+    let out = farm_in(
+        d,
+        &settings,
+        &[
+            "openjd",
+            "--threads",
+            "1",
+            "--frames",
+            "1-2",
+            "-o",
+            "job.yaml",
+        ],
+        &over,
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let template = std::fs::read_to_string(d.join("job.yaml")).unwrap();
+    assert_eq!(amount(&template, "amount.worker.vcpu"), 1, "{template}");
+    let memory = amount(&template, "amount.worker.memory");
+    // On one thread a block is 1024 x 16 x 12 = 196,608 bytes: a strip is
+    // ceil(1 MiB / block) = 6 blocks, 96 rows.
+    assert_eq!(memory, over_bound_by_hand(1024, 96), "{template}");
+    assert_eq!(
+        template.matches("\"--threads\", \"1\"").count(),
+        1,
+        "{template}"
+    );
+    assert!(
+        template.contains("EXRCOMP_TEST_SETTING: \"{{Param.Env")
+            && template.contains("default: \"a{{b}}\""),
+        "{template}"
+    );
+    assert!(
+        template.contains("\ndescription: \"exrcomp over fg.####.exr")
+            && template.contains(&format!("at most {memory} MiB")),
+        "{template}"
+    );
+    // A run of the command on those threads holds less than the bound.
+    let local = exrcomp()
+        .args(over)
+        .args(["--frames", "1-2", "--threads", "1", "--json"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(local.status.success(), "{}", stderr(&local));
+    let summary: serde_json::Value = serde_json::from_slice(&local.stdout).unwrap();
+    let peak = summary["peak_rss_bytes"].as_u64().unwrap();
+    assert!(
+        peak <= memory << 20,
+        "peak {peak} over the bound {memory} MiB"
+    );
+    // COMMAND's own --threads is the one the job asks for, once.
+    let out = farm_in(
+        d,
+        &[],
+        &["openjd", "--frames", "1-2", "-o", "two.yaml"],
+        &[&over[..], &["--threads", "2"]].concat(),
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let two = std::fs::read_to_string(d.join("two.yaml")).unwrap();
+    assert_eq!(amount(&two, "amount.worker.vcpu"), 2, "{two}");
+    let args = two.split("args: [").nth(1).unwrap();
+    assert_eq!(args.matches("--threads").count(), 1, "{two}");
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    openjd(&openjd_cli, &["check", "job.yaml"], d);
+    let log = openjd(&openjd_cli, &["run", "job.yaml", "--step", "exrcomp"], d);
+    assert!(
+        log.contains("Setting: EXRCOMP_TEST_SETTING=a{{b}}"),
+        "{log}"
+    );
+    assert!(d.join("out/c.0002.exr").exists());
+}
+
+/// An OpenCue outline as OpenJD's templates are made: COMMAND parsed and
+/// checked (nothing written for one that would fail), names absolute by
+/// parsing, --resume and --quiet once, ranges with steps; the layer asks
+/// for its service, the task's threads as cores and the memory bound, and
+/// carries the EXRCOMP_* settings. Its chunks, run as RQD runs them (tokens
+/// replaced, through a shell), write what a local run writes.
+#[test]
+fn opencue_layers_get_service_cores_memory_and_checked_commands() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    for (frames, input, code) in [("1-7", "fgg.####.exr", 3), ("1,2,5", "fg.####.exr", 2)] {
+        let out = farm_in(
+            d,
+            &[],
+            &["opencue", "--frames", frames, "-o", "bad.json"],
+            &["over", input, "bg.####.exr", "-o", "c.####.exr"],
+        );
+        assert_eq!(out.status.code(), Some(code), "{}", stderr(&out));
+        assert!(!d.join("bad.json").exists());
+    }
+    let out = farm_in(
+        d,
+        &[("EXRCOMP_TEST_SETTING", "x y")],
+        &[
+            "opencue",
+            "--threads",
+            "1",
+            "--frames",
+            "1-7x2",
+            "--chunk",
+            "2",
+            "--service",
+            "comp",
+            "-o",
+            "jobs/cue.json",
+        ],
+        &[
+            "over",
+            "fg.####.exr",
+            "bg.####.exr",
+            "--output=cue dir/c.####.exr",
+            "-q",
+            "--resume",
+        ],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let Some(python) = pyoutline() else {
+        return;
+    };
+    let spec = cue_spec(&python, &d.join("jobs/cue.json"));
+    for part in [
+        "<range>1-7x2</range>".to_string(),
+        "<chunk>2</chunk>".to_string(),
+        "<cores>1.0</cores>".to_string(),
+        // A strip of a 64x48 frame is its 48 rows.
+        format!("<memory>{}m</memory>", over_bound_by_hand(64, 48)),
+        "<key name=\"EXRCOMP_TEST_SETTING\">x y</key>".to_string(),
+        "<service>comp</service>".to_string(),
+    ] {
+        assert!(spec.contains(&part), "{part} not in\n{spec}");
+    }
+    let cmd = cue_command(&spec);
+    assert_eq!(cmd.matches("--resume").count(), 1, "{cmd}");
+    assert_eq!(
+        cmd.matches("-q").count() + cmd.matches("--quiet").count(),
+        1,
+        "{cmd}"
+    );
+    assert!(
+        cmd.contains(&format!("'{}/cue dir/c.####.exr'", s(d))),
+        "{cmd}"
+    );
+    run_cue_chunks(&cmd, &[(1, 3), (5, 7)]);
+    local_over(d);
+    for frame in 1..=7 {
+        let name = format!("comp.{frame:04}.exr");
+        let cue = d.join("cue dir").join(format!("c.{frame:04}.exr"));
+        match frame % 2 {
+            1 => assert_eq!(
+                std::fs::read(cue).unwrap(),
+                std::fs::read(d.join("local").join(&name)).unwrap()
+            ),
+            _ => assert!(!cue.exists(), "{frame} is not in 1-7x2"),
+        }
+    }
+}
+
+/// Job-info keys of Deadline 10 (User Manual, "Manual Job Submission", job
+/// info file; "Render Environment" for EnvironmentKeyValue#), those
+/// numbered with # for their index.
+const DEADLINE_JOB_KEYS: [&str; 33] = [
+    "Plugin",
+    "Frames",
+    "Name",
+    "Comment",
+    "Department",
+    "BatchName",
+    "Pool",
+    "SecondaryPool",
+    "Group",
+    "Priority",
+    "ChunkSize",
+    "ConcurrentTasks",
+    "LimitConcurrentTasksToNumberOfCpus",
+    "MachineLimit",
+    "Whitelist",
+    "Blacklist",
+    "LimitGroups",
+    "JobDependencies",
+    "OnJobComplete",
+    "InitialStatus",
+    "TaskTimeoutMinutes",
+    "EnableAutoTimeout",
+    "MinRenderTimeSeconds",
+    "OverrideTaskFailureDetection",
+    "FailureDetectionTaskErrors",
+    "OutputDirectory#",
+    "OutputFilename#",
+    "EnvironmentKeyValue#",
+    "IncludeEnvironment",
+    "UseJobEnvironmentOnly",
+    "ExtraInfo#",
+    "ExtraInfoKeyValue#",
+    "UserName",
+];
+
+/// Plugin-info keys of Deadline's CommandLine plugin (the
+/// `-SubmitCommandLineJob` options it is submitted with).
+const DEADLINE_COMMANDLINE_KEYS: [&str; 5] = [
+    "Executable",
+    "Arguments",
+    "StartupDirectory",
+    "Shell",
+    "ShellExecute",
+];
+
+/// A Deadline key=value file, every key one of `allowed` (`#` an index).
+fn deadline_file(path: &Path, allowed: &[&str]) -> Vec<(String, String)> {
+    let text = std::fs::read_to_string(path).unwrap();
+    text.lines()
+        .map(|line| {
+            let (key, value) = line.split_once('=').unwrap_or_else(|| panic!("{line:?}"));
+            let base = key.trim_end_matches(|c: char| c.is_ascii_digit());
+            let known = allowed.contains(&key)
+                || (base != key && allowed.contains(&format!("{base}#").as_str()));
+            assert!(known, "{key} is not a documented key: {text}");
+            (key.to_string(), value.to_string())
+        })
+        .collect()
+}
+
+/// `farm deadline ARGS` of fg over bg into `output`, with `env`: its job
+/// info and plugin info (`JOB.job`, `JOB.plugin.job`), documented keys only.
+type Pairs = Vec<(String, String)>;
+fn deadline_over(d: &Path, env: &[(&str, &str)], args: &[&str], output: &str) -> (Pairs, Pairs) {
+    let args = [&["deadline"][..], args].concat();
+    let out = farm_in(
+        d,
+        env,
+        &args,
+        &["over", "fg.####.exr", "bg.####.exr", "-o", output],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let job = d.join(args.last().unwrap());
+    let plugin = job.with_extension("plugin.job");
+    (
+        deadline_file(&job, &DEADLINE_JOB_KEYS),
+        deadline_file(&plugin, &DEADLINE_COMMANDLINE_KEYS),
+    )
+}
+
+/// Arguments as the CommandLine plugin gives them to the executable:
+/// `<QUOTE>` a double quote, split at spaces outside quotes.
+fn deadline_arguments(line: &str) -> Vec<String> {
+    let line = line.replace("<QUOTE>", "\"");
+    let (mut args, mut word, mut quoted, mut any) = (Vec::new(), String::new(), false, false);
+    for c in line.chars() {
+        match c {
+            '"' => (quoted, any) = (!quoted, true),
+            ' ' if !quoted => {
+                if any || !word.is_empty() {
+                    args.push(std::mem::take(&mut word));
+                }
+                any = false;
+            }
+            c => word.push(c),
+        }
+    }
+    if any || !word.is_empty() {
+        args.push(word);
+    }
+    args
+}
+
+/// Deadline 10 job files for the CommandLine plugin: documented keys only,
+/// the frames and chunk size, the output for the Monitor, the settings as
+/// the job's environment, the needs as extra info; each chunk's command,
+/// its tokens replaced as Deadline replaces them, writes what a local run
+/// writes. Frame lists Deadline cannot chunk, and commands that would fail,
+/// write nothing.
+#[test]
+fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    for (frames, command) in [
+        (
+            "1,2,5",
+            &["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"][..],
+        ),
+        (
+            "1-7",
+            &["over", "fg.####.exr", "bg.####.exr", "-o", "./bg.####.exr"],
+        ),
+        ("1-7", &["stitch", "a.exr", "-o", "c.exr"]),
+    ] {
+        let out = farm_in(
+            d,
+            &[],
+            &["deadline", "--frames", frames, "-o", "bad.job"],
+            command,
+        );
+        assert_eq!(out.status.code(), Some(2), "{command:?}: {}", stderr(&out));
+        assert!(!d.join("bad.job").exists() && !d.join("bad.plugin.job").exists());
+    }
+    let (info, plugin) = deadline_over(
+        d,
+        &[("EXRCOMP_TEST_SETTING", "on")],
+        &[
+            "--threads",
+            "1",
+            "--frames",
+            "1-7",
+            "--chunk",
+            "3",
+            "-o",
+            "jobs/comp.job",
+        ],
+        "dl out/c.%04d.exr",
+    );
+    let get = |pairs: &[(String, String)], key: &str| {
+        pairs
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.clone())
+            .unwrap_or_else(|| panic!("no {key} in {pairs:?}"))
+    };
+    for (key, value) in [
+        ("Plugin", "CommandLine".to_string()),
+        ("Name", "exrcomp over".to_string()),
+        ("Frames", "1-7".to_string()),
+        ("ChunkSize", "3".to_string()),
+        ("OutputDirectory0", s(&d.join("dl out")).to_string()),
+        ("OutputFilename0", "c.####.exr".to_string()),
+        ("ExtraInfoKeyValue0", "exrcomp.threads=1".to_string()),
+    ] {
+        assert_eq!(get(&info, key), value, "{key}");
+    }
+    assert!(get(&info, "ExtraInfoKeyValue1").starts_with("exrcomp.memory_mib="));
+    assert!(
+        info.iter()
+            .any(|(k, v)| k.starts_with("EnvironmentKeyValue") && v == "EXRCOMP_TEST_SETTING=on"),
+        "{info:?}"
+    );
+    assert!(get(&info, "Comment").contains("--threads 1"));
+    let arguments = get(&plugin, "Arguments");
+    assert!(
+        arguments.ends_with("--frames <STARTFRAME>-<ENDFRAME>"),
+        "{arguments}"
+    );
+    assert_eq!(arguments.matches("--resume").count(), 1, "{arguments}");
+    // Deadline's chunks of 1-7 by 3, each run with its tokens replaced.
+    for (start, end) in [(1, 3), (4, 6), (7, 7)] {
+        let line = arguments
+            .replace("<STARTFRAME>", &start.to_string())
+            .replace("<ENDFRAME>", &end.to_string());
+        let out = Command::new(get(&plugin, "Executable"))
+            .args(deadline_arguments(&line))
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{line}: {}", stderr(&out));
+    }
+    local_over(d);
+    for frame in 1..=7 {
+        assert_eq!(
+            std::fs::read(d.join(format!("dl out/c.{frame:04}.exr"))).unwrap(),
+            std::fs::read(d.join(format!("local/comp.{frame:04}.exr"))).unwrap(),
+            "frame {frame}"
+        );
+    }
+    // A stepped range: Deadline's own `x` syntax, each chunk's frames stepped.
+    let (info, plugin) = deadline_over(
+        d,
+        &[],
+        &["--frames", "1-7:2", "--chunk", "2", "-o", "step.job"],
+        "step/c.####.exr",
+    );
+    assert_eq!(get(&info, "Frames"), "1-7x2");
+    assert!(get(&plugin, "Arguments").ends_with("--frames <STARTFRAME>-<ENDFRAME>:2"));
 }
