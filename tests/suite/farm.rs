@@ -6,11 +6,6 @@ use crate::common::*;
 use std::path::Path;
 use std::process::Command;
 
-fn ok(args: &[&str]) {
-    let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-}
-
 /// Frames 1-7 of fg over bg, run locally into `d/local/`.
 fn local_over(d: &Path) {
     let p = |n: &str| d.join(n);
