@@ -418,7 +418,13 @@ fn unraw(bytes: &[u8]) -> Vec<f32> {
 }
 
 /// The peer's result of every case on `pixels`, in case order.
-fn peer(python: &str, dir: &Path, tag: &str, pixels: &[[f32; 3]], cases: &[Case]) -> Vec<Vec<f32>> {
+fn reference(
+    python: &str,
+    dir: &Path,
+    tag: &str,
+    pixels: &[[f32; 3]],
+    cases: &[Case],
+) -> Vec<Vec<f32>> {
     let grid = dir.join(format!("grid_{tag}.raw"));
     std::fs::write(&grid, raw(pixels.iter().flatten().copied())).unwrap();
     let outs: Vec<PathBuf> = cases
@@ -504,8 +510,8 @@ fn every_command_matches_pypi_opencolorio_in_float_and_half() {
         Compression::ZIP16,
         LineOrder::Increasing,
     );
-    let float_ref = peer(&python, dir.path(), "float", &grid(), &cases);
-    let half_ref = peer(&python, dir.path(), "half", &rgb(&half_img), &cases);
+    let float_ref = reference(&python, dir.path(), "float", &grid(), &cases);
+    let half_ref = reference(&python, dir.path(), "half", &rgb(&half_img), &cases);
     for (k, c) in cases.iter().enumerate() {
         for (input, img, reference, half) in [
             (&float_in, &float_img, &float_ref[k], false),
@@ -534,5 +540,195 @@ fn every_command_matches_pypi_opencolorio_in_float_and_half() {
                 c.name
             );
         }
+    }
+}
+
+/// `img`'s R, G, B with `alpha` (premultiplied) divided out where it is not 0.
+fn straight(img: &Img, prefix: &str) -> Vec<[f32; 3]> {
+    (0..img.width * img.height)
+        .map(|i| {
+            let a = img.channels["A"].get_f32(i);
+            ["R", "G", "B"].map(|c| {
+                let v = img.channels[&format!("{prefix}{c}")].get_f32(i);
+                if a == 0.0 {
+                    v
+                } else {
+                    v / a
+                }
+            })
+        })
+        .collect()
+}
+
+fn assert_close(name: &str, got: f32, want: f32) {
+    let ok = got == want || (got - want).abs() <= 1e-5 * want.abs().max(1e-3);
+    assert!(ok, "{name}: {got}, the reference {want}");
+}
+
+#[test]
+fn alpha_layers_job_nodes_and_the_ocio_variable() {
+    let Some(python) = python() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // Premultiplied float RGBA (alpha 0 and 1 among others), Z, id, and a
+    // half `diffuse` layer.
+    let mut img = random_rgba(5, -2, 3, 23, 11, Kind::Float, true);
+    let mut rng = Lcg(9);
+    for c in ["R", "G", "B"] {
+        let values = (0..23 * 11)
+            .map(|_| f16::from_f32(rng.next() * 3.0))
+            .collect();
+        img.channels
+            .insert(format!("diffuse.{c}"), Samples::F16(values));
+    }
+    let input = d.join("in.exr");
+    write_image(&input, &img, Compression::ZIP16, LineOrder::Increasing);
+    let convert = json!({"kind": "colorconvert", "config": V1, "from": "ACEScg", "to": "ACEScct"});
+    let case = |name| case(name, &[], convert.clone());
+    let refs = reference(&python, d, "alpha", &straight(&img, ""), &[case("rgb")]);
+    let plain = reference(&python, d, "plain", &rgb(&img), &[case("plain")]);
+    let diffuse = reference(
+        &python,
+        d,
+        "diffuse",
+        &straight(&img, "diffuse."),
+        &[case("layer")],
+    );
+    let command = |out: &Path, extra: &[&str]| {
+        let mut args = vec!["colorconvert", s(&input), "-o", s(out), "-q"];
+        args.extend(["--from", "ACEScg", "--to", "ACEScct"]);
+        args.extend(extra);
+        let result = run(&args);
+        assert!(result.status.success(), "{args:?}: {}", stderr(&result));
+        read_image(out)
+    };
+    let ours = command(&d.join("rgb.exr"), &["--config", V1]);
+    let as_is = command(&d.join("as_is.exr"), &["--config", V1, "--no-unpremult"]);
+    let layer = command(
+        &d.join("layer.exr"),
+        &["--config", V1, "--layer", "diffuse"],
+    );
+    for i in 0..23 * 11 {
+        let a = img.channels["A"].get_f32(i);
+        for (k, c) in ["R", "G", "B"].into_iter().enumerate() {
+            // Unpremultiplied, converted, premultiplied: 0 where alpha is 0.
+            let want = refs[0][3 * i + k] * a;
+            assert_close(c, ours.channels[c].get_f32(i), want);
+            assert_close(c, as_is.channels[c].get_f32(i), plain[0][3 * i + k]);
+            let name = format!("diffuse.{c}");
+            let want = f16::from_f32(diffuse[0][3 * i + k] * a).to_f32();
+            let got = layer.channels[&name].get_f32(i);
+            assert!(
+                (got - want).abs() <= 1e-3 * want.abs().max(1e-3),
+                "{name}: {got} vs {want}"
+            );
+        }
+    }
+    for (out, kept) in [
+        (&ours, &["A", "Z", "id", "diffuse.R"][..]),
+        (&layer, &["A", "R", "G", "B", "Z", "id"]),
+    ] {
+        for name in kept {
+            assert_eq!(
+                out.channels[*name], img.channels[*name],
+                "{name} passes bit for bit"
+            );
+        }
+    }
+    // $OCIO names the config when --config does not.
+    let by_env = d.join("env.exr");
+    let mut call = exrcomp();
+    call.args(["colorconvert", s(&input), "-o", s(&by_env), "-q"]);
+    call.args(["--from", "ACEScg", "--to", "ACEScct"]);
+    succeed(call.env("OCIO", V1));
+    assert_identical(&read_image(&by_env), &ours);
+    let out = call.env("OCIO", d.join("missing.ocio")).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let message = stderr(&out);
+    assert!(message.contains("missing.ocio' ($OCIO)"), "{message}");
+    assert_eq!(message.lines().count(), 1, "{message}");
+    // The same node in a job file.
+    let job = d.join("job.toml");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"in.exr\"\n\n[[node]]\nname = \"cc\"\n\
+             op = \"colorconvert\"\nconfig = \"{V1}\"\nfrom = \"ACEScg\"\nto = \"ACEScct\"\n\
+             layers = [\"diffuse\"]\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\n\
+             write = \"job.exr\"\ninputs = [\"cc\"]\n"
+        ),
+    )
+    .unwrap();
+    succeed(exrcomp().args(["run", s(&job), "-q"]));
+    assert_identical(&read_image(&d.join("job.exr")), &layer);
+    // An unknown name: exit 2 before any frame, one line, a near miss.
+    let out = run(&[
+        "ociolook",
+        s(&input),
+        "-o",
+        s(&d.join("x.exr")),
+        "--look",
+        "ACES 1.3 Reference Gamut Compresion",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let message = stderr(&out);
+    assert!(
+        message.contains("did you mean 'ACES 1.3 Reference Gamut Compression'?"),
+        "{message}"
+    );
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert!(!d.join("x.exr").exists());
+}
+
+/// specs/examples/conversion.toml: a LogC4 plate, ten frames on, shuffled
+/// and converted to ACEScg with timecode, against PyPI's opencolorio.
+#[test]
+fn the_conversion_example_runs_in_one_pass() {
+    let Some(python) = python() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("specs/examples");
+    std::fs::copy(examples.join("conversion.toml"), d.join("conversion.toml")).unwrap();
+    let plate = |frame: u64| {
+        let mut img = random_rgba(frame, 0, 0, 16, 9, Kind::Half, false);
+        for c in ["R", "G", "B"] {
+            let samples = img.channels.remove(c).unwrap();
+            img.channels.insert(format!("camera.{c}"), samples);
+        }
+        img.channels.remove("A");
+        img
+    };
+    for frame in 1011..=1014 {
+        let path = d.join(format!("plate.{frame}.exr"));
+        write_image(
+            &path,
+            &plate(frame),
+            Compression::ZIP16,
+            LineOrder::Increasing,
+        );
+    }
+    succeed(exrcomp().args(["run", s(&d.join("conversion.toml")), "-q"]));
+    let studio = "ocio://studio-config-v4.0.0_aces-v2.0_ocio-v2.5";
+    let logc =
+        json!({"kind": "colorconvert", "config": studio, "from": "ARRI LogC4", "to": "ACEScg"});
+    let source = plate(1012);
+    let camera: Vec<[f32; 3]> = (0..16 * 9)
+        .map(|i| ["R", "G", "B"].map(|c| source.channels[&format!("camera.{c}")].get_f32(i)))
+        .collect();
+    let reference = reference(&python, d, "logc", &camera, &[case("logc", &[], logc)]);
+    let out = read_image(&d.join("plate_acescg.1002.exr"));
+    assert_eq!(
+        out.channels.keys().collect::<Vec<_>>(),
+        ["A", "B", "G", "R"]
+    );
+    compare("conversion", &rgb(&out), &reference[0], true);
+    assert!((0..16 * 9).all(|i| out.channels["A"].get_f32(i) == 1.0));
+    if let Some(exrheader) = crate::common::peer("exrheader") {
+        let text = String::from_utf8_lossy(
+            &succeed(Command::new(exrheader).arg(d.join("plate_acescg.1002.exr"))).stdout,
+        )
+        .to_string();
+        assert!(text.contains("01:00:00:01"), "{text}");
+        assert!(text.contains("\"ACEScg\""), "{text}");
     }
 }
