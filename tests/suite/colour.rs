@@ -732,3 +732,127 @@ fn the_conversion_example_runs_in_one_pass() {
         assert!(text.contains("\"ACEScg\""), "{text}");
     }
 }
+
+/// oiiotool 2.4 runs Debian's OpenColorIO 2.1.2 (specs/colour-library.md),
+/// which has no built-in configs: both read the ACES 1.3 CG config as PyPI
+/// serializes it. Where 2.1.2 computes what 2.6 does (matrices, ACEScct, the
+/// gamut compression look, LUT files) the two agree to 1e-5; its CDL and
+/// ACES 1.0 output transform are older code (measured 9.5e-4 and 5.3e-3
+/// apart). oiiotool's `--ociofiletransform` interpolates with OCIO's "best"
+/// (tetrahedral in a 3D LUT), exrcomp with the format's default (trilinear
+/// for `.cube`) unless `--interpolation` says otherwise.
+#[test]
+fn oiiotool_agrees_where_its_opencolorio_2_1_does() {
+    let (Some(python), Some(oiiotool)) = (python(), crate::common::peer("oiiotool")) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_luts(d);
+    let config = d.join("aces13.ocio");
+    let serialize = format!("import PyOpenColorIO as o; open(r'{}', 'w').write(o.Config.CreateFromFile('{V1}').serialize())", s(&config));
+    succeed(Command::new(&python).args(["-c", &serialize]));
+    let mut img = grid_image(&Kind::Float);
+    img.channels
+        .retain(|name, _| ["R", "G", "B"].contains(&name.as_str()));
+    let input = d.join("grid.exr");
+    write_image(&input, &img, Compression::ZIP16, LineOrder::Increasing);
+    let file = |name: &str| s(&d.join(name)).to_string();
+    let (cube, spi1d, cc) = (file("test.cube"), file("test.spi1d"), file("shot.cc"));
+    let cfg = s(&config);
+    let sdr = [
+        "--display",
+        "sRGB - Display",
+        "--display-view",
+        "ACES 1.0 - SDR Video",
+    ];
+    let cases: [(&str, Vec<&str>, Vec<&str>, f32); 7] = [
+        (
+            "matrix",
+            vec![
+                "colorconvert",
+                "--config",
+                cfg,
+                "--from",
+                "ACES2065-1",
+                "--to",
+                "ACEScg",
+            ],
+            vec!["--colorconvert", "ACES2065-1", "ACEScg"],
+            1e-5,
+        ),
+        (
+            "acescct",
+            vec![
+                "colorconvert",
+                "--config",
+                cfg,
+                "--from",
+                "ACEScg",
+                "--to",
+                "ACEScct",
+            ],
+            vec!["--colorconvert", "ACEScg", "ACEScct"],
+            1e-5,
+        ),
+        (
+            "look",
+            vec!["ociolook", "--config", cfg, "--look", GAMUT],
+            vec!["--ociolook:from=ACEScg:to=ACEScg", GAMUT],
+            1e-5,
+        ),
+        (
+            "cube",
+            vec!["filetransform", "--file", &cube, "--interpolation", "best"],
+            vec!["--ociofiletransform", &cube],
+            1e-5,
+        ),
+        (
+            "spi1d",
+            vec!["filetransform", "--file", &spi1d],
+            vec!["--ociofiletransform", &spi1d],
+            1e-5,
+        ),
+        (
+            "cdl",
+            vec!["cdl", "--file", &cc],
+            vec!["--ociofiletransform", &cc],
+            1e-3,
+        ),
+        (
+            "display",
+            [vec!["ociodisplay", "--config", cfg], sdr.to_vec()].concat(),
+            vec![
+                "--ociodisplay:from=ACEScg",
+                "sRGB - Display",
+                "ACES 1.0 - SDR Video",
+            ],
+            1e-2,
+        ),
+    ];
+    for (name, ours, theirs, tolerance) in cases {
+        let (a, b) = (
+            d.join(format!("{name}_ours.exr")),
+            d.join(format!("{name}_oiio.exr")),
+        );
+        let mut args = vec![ours[0], s(&input), "-o", s(&a), "-q"];
+        args.extend(&ours[1..]);
+        let out = run(&args);
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        succeed(
+            Command::new(&oiiotool)
+                .args(["--colorconfig", cfg, s(&input)])
+                .args(&theirs)
+                .args(["-d", "float", "-o", s(&b)]),
+        );
+        let (ours, theirs) = (rgb(&read_image(&a)), rgb(&read_image(&b)));
+        let mut worst = 0.0f32;
+        for (x, y) in ours.iter().flatten().zip(theirs.iter().flatten()) {
+            if x != y {
+                worst = worst.max((x - y).abs() / y.abs().max(1e-3));
+            }
+        }
+        eprintln!("{name}: oiiotool 2.4 (OCIO 2.1.2) differs by {worst:.2e} relative");
+        assert!(worst <= tolerance, "{name}: {worst} over {tolerance}");
+    }
+}
