@@ -661,6 +661,29 @@ fn alpha_layers_job_nodes_and_the_ocio_variable() {
     .unwrap();
     succeed(exrcomp().args(["run", s(&job), "-q"]));
     assert_identical(&read_image(&d.join("job.exr")), &layer);
+    // A job's file names are relative to its folder, wherever it runs.
+    write_luts(d);
+    let lut = d.join("lut.toml");
+    std::fs::write(
+        &lut,
+        "[[node]]\nname = \"in\"\nread = \"in.exr\"\n\n[[node]]\nname = \"lut\"\n\
+         op = \"filetransform\"\nfile = \"test.cube\"\ninputs = [\"in\"]\n\n[[node]]\n\
+         name = \"out\"\nwrite = \"lut.exr\"\ninputs = [\"lut\"]\n",
+    )
+    .unwrap();
+    succeed(exrcomp().args(["run", s(&lut), "-q"]).current_dir("/"));
+    let by_command = d.join("lut_command.exr");
+    let cube = d.join("test.cube");
+    succeed(exrcomp().args([
+        "filetransform",
+        s(&input),
+        "-o",
+        s(&by_command),
+        "-q",
+        "--file",
+        s(&cube),
+    ]));
+    assert_identical(&read_image(&d.join("lut.exr")), &read_image(&by_command));
     // An unknown name: exit 2 before any frame, one line, a near miss.
     let out = run(&[
         "ociolook",

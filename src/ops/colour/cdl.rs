@@ -2,7 +2,7 @@
 //! offset, power and saturation given, or read from a `.cc`, `.ccc` or
 //! `.cdl` file (a correction picked by `--id`).
 
-use super::super::declare::{params, Operation};
+use super::super::declare::{params, FileName, Operation};
 use super::super::grade::Rgb;
 use super::colorconvert::COLORCONVERT;
 use super::filetransform::{file, read};
@@ -67,7 +67,7 @@ params! {
         /// Saturation, with Rec.709 luma (default 1).
         saturation: Option<f32> [SATURATION_FACTOR],
         /// A .cc, .ccc or .cdl file instead of the values.
-        file: Option<String>,
+        file: Option<FileName>,
         /// The correction of a .ccc or .cdl file: its id, or its index
         /// (default: the first).
         id: Option<String>,

@@ -1,7 +1,7 @@
 //! `colorconvert`: from one colour space of the config to another (OCIO's
 //! ColorSpaceTransform; oiiotool's `--colorconvert`, Nuke's OCIOColorSpace).
 
-use super::super::declare::{input, params, Operation};
+use super::super::declare::{input, params, FileName, Operation};
 use ocio::{ColorSpaceTransform, Transform};
 
 pub const COLORCONVERT: Operation = Operation {
@@ -16,7 +16,7 @@ pub const COLORCONVERT: Operation = Operation {
     header: Some(0),
     build: |args, graph, inputs| {
         let p = ColorconvertParams::read(args)?;
-        let config = super::config(p.config.as_deref())?;
+        let config = super::config(p.config.as_ref())?;
         let (from, to) = (
             super::colour_space(&config, &p.from)?,
             super::colour_space(&config, &p.to)?,
@@ -36,7 +36,7 @@ params! {
         to: String,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
-        config: Option<String>,
+        config: Option<FileName>,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }

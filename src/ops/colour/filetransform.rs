@@ -2,7 +2,7 @@
 //! `.cube`, `.spi1d`, `.spi3d`, `.clf`, `.ctf`, `.3dl`, `.cc`...; oiiotool's
 //! `--ociofiletransform`, Nuke's OCIOFileTransform), no config needed.
 
-use super::super::declare::{choice, params, Operation, Value};
+use super::super::declare::{choice, params, FileName, Operation, Value};
 use super::colorconvert::COLORCONVERT;
 use ocio::{Config, FileTransform, Interpolation, Transform};
 
@@ -24,7 +24,7 @@ pub const FILETRANSFORM: Operation = Operation {
 params! {
     pub struct FiletransformParams {
         /// The file (a LUT, CLF/CTF, or a CDL file).
-        file: String,
+        file: FileName,
         /// Apply the file's inverse.
         inverse: bool,
         /// LUT interpolation: default (the format's), nearest, linear,
@@ -37,7 +37,8 @@ params! {
 
 /// `file` as an absolute path (OCIO resolves relative ones against a
 /// config's search path; a raw config has none), checked to exist.
-pub fn file(file: &str) -> Result<String, String> {
+pub fn file(file: &FileName) -> Result<String, String> {
+    let file = file.0.as_str();
     let path = std::path::absolute(file).map_err(|e| format!("file '{file}': {e}"))?;
     if !path.is_file() {
         return Err(format!("no file '{file}' (the LUT or transform to apply)"));
@@ -47,9 +48,9 @@ pub fn file(file: &str) -> Result<String, String> {
 
 /// A file transform's processor, on a raw config: the file's own error,
 /// named, when it does not read.
-pub fn read(transform: Transform, file: &str) -> Result<ocio::Processor, String> {
+pub fn read(transform: Transform, file: &FileName) -> Result<ocio::Processor, String> {
     super::processor(&Config::create_raw(), transform)
-        .map_err(|e| format!("cannot apply '{file}': {e}"))
+        .map_err(|e| format!("cannot apply '{}': {e}", file.0))
 }
 
 /// OCIO's LUT interpolation, by name.

@@ -12,7 +12,7 @@ pub mod filetransform;
 pub mod ociodisplay;
 pub mod ociolook;
 
-use super::declare::Args;
+use super::declare::{Args, FileName};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
 use crate::io::parts::unknown;
@@ -25,10 +25,10 @@ pub const BUILTIN: &str = "ocio://cg-config-latest";
 /// The config: `--config FILE|ocio://NAME`, else `$OCIO` when set and not
 /// empty, else the built-in one (not the crate's `create_from_env`, which
 /// gives a raw config without `$OCIO`).
-pub fn config(given: Option<&str>) -> Result<Config, String> {
+pub fn config(given: Option<&FileName>) -> Result<Config, String> {
     let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
     let (source, from) = match (given, env) {
-        (Some(file), _) => (file.to_string(), "--config"),
+        (Some(file), _) => (file.0.clone(), "--config"),
         (None, Some(file)) => (file, "$OCIO"),
         (None, None) => (BUILTIN.to_string(), "the built-in default"),
     };
@@ -353,7 +353,10 @@ mod tests {
     }
 
     fn v1() -> Config {
-        config(Some("ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1")).unwrap()
+        config(Some(&FileName(
+            "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1".into(),
+        )))
+        .unwrap()
     }
 
     #[test]
@@ -388,14 +391,18 @@ mod tests {
 
     #[test]
     fn the_config_comes_from_the_option_else_ocio_else_the_builtin() {
-        let message = config(Some("/nowhere/config.ocio")).err().unwrap();
+        let message = config(Some(&FileName("/nowhere/config.ocio".into())))
+            .err()
+            .unwrap();
         assert!(
             message.starts_with("cannot load the OCIO config '/nowhere/config.ocio' (--config)")
         );
-        let message = config(Some("ocio://no-such-config")).err().unwrap();
+        let message = config(Some(&FileName("ocio://no-such-config".into())))
+            .err()
+            .unwrap();
         assert!(message.contains("no-such-config"), "{message}");
         // $OCIO is read by the process; the suite's colour module tests it.
-        assert!(config(Some(BUILTIN)).is_ok());
+        assert!(config(Some(&FileName(BUILTIN.into()))).is_ok());
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! `--looks` replaces the view's looks, as oiiotool's `looks=` does (OCIO's
 //! LegacyViewingPipeline with its looks override).
 
-use super::super::declare::{params, Operation};
+use super::super::declare::{params, FileName, Operation};
 use super::colorconvert::COLORCONVERT;
 use ocio::apphelpers::legacy_viewing_pipeline::LegacyViewingPipeline;
 use ocio::{DisplayViewTransform, Transform};
@@ -15,7 +15,7 @@ pub const OCIODISPLAY: Operation = Operation {
     params: OciodisplayParams::PARAMS,
     build: |args, graph, inputs| {
         let p = OciodisplayParams::read(args)?;
-        let config = super::config(p.config.as_deref())?;
+        let config = super::config(p.config.as_ref())?;
         let from = super::colour_space(&config, &p.from)?;
         let displays = (0..config.num_displays())
             .map(|i| config.display(i))
@@ -61,7 +61,7 @@ params! {
         looks: Option<String>,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
-        config: Option<String>,
+        config: Option<FileName>,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }

@@ -2,7 +2,7 @@
 //! `--ociolook`, Nuke's OCIOLookTransform), from a colour space to another
 //! through the look's process space.
 
-use super::super::declare::{params, Operation};
+use super::super::declare::{params, FileName, Operation};
 use super::colorconvert::COLORCONVERT;
 use ocio::{LookTransform, Transform};
 
@@ -12,7 +12,7 @@ pub const OCIOLOOK: Operation = Operation {
     params: OciolookParams::PARAMS,
     build: |args, graph, inputs| {
         let p = OciolookParams::read(args)?;
-        let config = super::config(p.config.as_deref())?;
+        let config = super::config(p.config.as_ref())?;
         let from = super::colour_space(&config, &p.from)?;
         let to = match &p.to {
             Some(to) => super::colour_space(&config, to)?,
@@ -38,7 +38,7 @@ params! {
         inverse: bool,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
-        config: Option<String>,
+        config: Option<FileName>,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }
