@@ -372,15 +372,15 @@ fn cases(dir: &Path) -> Vec<Case> {
             json!({"kind": "file", "file": cube}),
         ),
         case(
-            "cube_nearest",
+            "cube_tetrahedral",
             &[
                 "filetransform",
                 "--file",
                 &cube,
                 "--interpolation",
-                "nearest",
+                "tetrahedral",
             ],
-            json!({"kind": "file", "file": cube, "interpolation": "nearest"}),
+            json!({"kind": "file", "file": cube, "interpolation": "tetrahedral"}),
         ),
         case(
             "spi1d",
