@@ -72,10 +72,13 @@ pub struct JobPlan {
 }
 
 /// A file name in the job as a path: relative ones are relative to the job
-/// file's folder, so a shot's job file travels with it.
+/// file's folder, so a shot's job file travels with it; a URI
+/// (`ocio://NAME`) is not a file name.
 fn beside(job: &Path, file: &str) -> String {
     match job.parent() {
-        Some(dir) if Path::new(file).is_relative() => dir.join(file).to_string_lossy().into_owned(),
+        Some(dir) if Path::new(file).is_relative() && !file.contains("://") => {
+            dir.join(file).to_string_lossy().into_owned()
+        }
         _ => file.to_string(),
     }
 }
@@ -261,6 +264,11 @@ impl<'a> Node<'a> {
             if let Some(value) = self.get(param.name) {
                 let text = as_text(value.get_ref()).or_else(|m| at.error(value.span(), m))?;
                 (param.check)(&text).or_else(|m| at.error(value.span(), m))?;
+                let text = if param.file {
+                    beside(at.path, &text)
+                } else {
+                    text
+                };
                 values.insert(param.name, text);
             }
         }

@@ -80,6 +80,8 @@ pub const GAMMA: Bound = bound("gamma", 0.0, 1e3);
 /// 2^64 is still a finite f32.
 pub const STOPS: Bound = bound("stops", -64.0, 64.0);
 pub const SATURATION_FACTOR: Bound = bound("saturation", -1e3, 1e3);
+pub const CDL_SLOPE: Bound = bound("slope", 0.0, 1e6);
+pub const CDL_POWER: Bound = bound("power", 0.0, 1e3);
 /// DWAA/DWAB's `dwaCompressionLevel`: its quantisation step is the level /
 /// 100000 of a JPEG table step, so 100000 already flattens every block.
 pub const DWA_LEVEL: Bound = bound("dwa_level", 0.0, 1e5);

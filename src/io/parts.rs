@@ -87,7 +87,7 @@ fn views(file: &ExrFile) -> Vec<String> {
 }
 
 /// "no view 'centre' (views: left, right)", with a near name suggested.
-fn unknown(what: &str, asked: &str, listed: &str, names: &[String]) -> String {
+pub fn unknown(what: &str, asked: &str, listed: &str, names: &[String]) -> String {
     let mut message = format!("no {what} '{asked}' ({what}s: {listed})");
     if let Some(near) = nearest(asked, names) {
         message += &format!("; did you mean '{near}'?");

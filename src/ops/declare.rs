@@ -109,6 +109,8 @@ pub struct Param {
     pub flag: bool,
     /// The values it takes, for `--help`.
     pub choices: &'static [&'static str],
+    /// A file name (`FileName`): in a job file, relative to its folder.
+    pub file: bool,
     /// Parses and checks a value (bounds included).
     pub check: fn(&str) -> std::result::Result<(), String>,
 }
@@ -134,6 +136,7 @@ pub trait Value: Sized {
     const FLAG: bool = false;
     const OPTIONAL: bool = false;
     const CHOICES: &'static [&'static str] = &[];
+    const FILE: bool = false;
 }
 
 macro_rules! number {
@@ -172,6 +175,19 @@ impl Value for String {
     }
 }
 
+/// A file a parameter names (a LUT, a config): relative to the working
+/// folder on the command line, to the job file's folder in a job file, as a
+/// read node's file is; a URI (`ocio://NAME`) as it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FileName(pub String);
+
+impl Value for FileName {
+    fn parse(text: &str) -> std::result::Result<Self, String> {
+        Ok(FileName(text.to_string()))
+    }
+    const FILE: bool = true;
+}
+
 impl<T: Value> Value for Option<T> {
     fn parse(text: &str) -> std::result::Result<Self, String> {
         T::parse(text).map(Some)
@@ -184,6 +200,7 @@ impl<T: Value> Value for Option<T> {
     }
     const OPTIONAL: bool = true;
     const CHOICES: &'static [&'static str] = T::CHOICES;
+    const FILE: bool = T::FILE;
 }
 
 /// A value that is one of a few names (an enum), case-insensitive.
@@ -251,6 +268,7 @@ macro_rules! params {
                     optional: <$ty as $crate::ops::declare::Value>::OPTIONAL,
                     flag: <$ty as $crate::ops::declare::Value>::FLAG,
                     choices: <$ty as $crate::ops::declare::Value>::CHOICES,
+                    file: <$ty as $crate::ops::declare::Value>::FILE,
                     check: |text| params!(@parse $ty, text $(, $bound)?).map(drop),
                 },
             )*];

@@ -2,6 +2,8 @@
 //! strips, each declared once (`declare::Operation`) and listed in `ALL`.
 
 pub mod blur;
+#[cfg(feature = "colour")]
+pub mod colour;
 pub mod declare;
 pub mod defocus;
 pub mod diffrender;
@@ -44,6 +46,16 @@ pub const ALL: &[&Operation] = &[
     &grade::SATURATION,
     &shuffle::SHUFFLE,
     &shuffle::COPY,
+    #[cfg(feature = "colour")]
+    &colour::colorconvert::COLORCONVERT,
+    #[cfg(feature = "colour")]
+    &colour::ociodisplay::OCIODISPLAY,
+    #[cfg(feature = "colour")]
+    &colour::ociolook::OCIOLOOK,
+    #[cfg(feature = "colour")]
+    &colour::cdl::CDL,
+    #[cfg(feature = "colour")]
+    &colour::filetransform::FILETRANSFORM,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

@@ -5,6 +5,8 @@
 mod attributes;
 mod bench;
 mod blur;
+#[cfg(feature = "colour")]
+mod colour;
 mod common;
 mod damaged_corpus;
 mod deep;

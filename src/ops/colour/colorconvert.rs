@@ -1,0 +1,43 @@
+//! `colorconvert`: from one colour space of the config to another (OCIO's
+//! ColorSpaceTransform; oiiotool's `--colorconvert`, Nuke's OCIOColorSpace).
+
+use super::super::declare::{input, params, FileName, Operation};
+use ocio::{ColorSpaceTransform, Transform};
+
+pub const COLORCONVERT: Operation = Operation {
+    name: "colorconvert",
+    about: "OpenColorIO: colour from one colour space of the config to another \
+            (names, aliases or roles), on colour divided by alpha unless --no-unpremult",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: ColorconvertParams::PARAMS,
+    layers: true,
+    straight: false,
+    header: Some(0),
+    build: |args, graph, inputs| {
+        let p = ColorconvertParams::read(args)?;
+        let config = super::config(p.config.as_ref())?;
+        let (from, to) = (
+            super::colour_space(&config, &p.from)?,
+            super::colour_space(&config, &p.to)?,
+        );
+        let transform = Transform::ColorSpace(ColorSpaceTransform::new(&from, &to));
+        let processor = super::processor(&config, transform)?;
+        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+    },
+    measure: None,
+};
+
+params! {
+    pub struct ColorconvertParams {
+        /// The input's colour space (a name, alias or role of the config).
+        from: String,
+        /// The output's colour space.
+        to: String,
+        /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
+        /// else ocio://cg-config-latest.
+        config: Option<FileName>,
+        /// Transform the colour as it is, not divided by alpha first.
+        no_unpremult: bool,
+    }
+}

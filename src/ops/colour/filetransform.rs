@@ -1,0 +1,74 @@
+//! `filetransform`: a LUT or transform file (OCIO's FileTransform:
+//! `.cube`, `.spi1d`, `.spi3d`, `.clf`, `.ctf`, `.3dl`, `.cc`...; oiiotool's
+//! `--ociofiletransform`, Nuke's OCIOFileTransform), no config needed.
+
+use super::super::declare::{choice, params, FileName, Operation, Value};
+use super::colorconvert::COLORCONVERT;
+use ocio::{Config, FileTransform, Interpolation, Transform};
+
+pub const FILETRANSFORM: Operation = Operation {
+    name: "filetransform",
+    about: "OpenColorIO: apply a LUT or transform file (.cube, .spi1d, .spi3d, .clf...)",
+    params: FiletransformParams::PARAMS,
+    build: |args, graph, inputs| {
+        let p = FiletransformParams::read(args)?;
+        let mut transform = FileTransform::new(&file(&p.file)?);
+        transform.direction = super::direction(p.inverse);
+        transform.interpolation = p.interpolation.0;
+        let processor = read(Transform::File(transform), &p.file)?;
+        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+    },
+    ..COLORCONVERT
+};
+
+params! {
+    pub struct FiletransformParams {
+        /// The file (a LUT, CLF/CTF, or a CDL file).
+        file: FileName,
+        /// Apply the file's inverse.
+        inverse: bool,
+        /// LUT interpolation: default (the format's), nearest, linear,
+        /// tetrahedral (3D LUTs), cubic (1D LUTs), best.
+        interpolation: Interp = "default",
+        /// Transform the colour as it is, not divided by alpha first.
+        no_unpremult: bool,
+    }
+}
+
+/// `file` as an absolute path (OCIO resolves relative ones against a
+/// config's search path; a raw config has none), checked to exist.
+pub fn file(file: &FileName) -> Result<String, String> {
+    let file = file.0.as_str();
+    let path = std::path::absolute(file).map_err(|e| format!("file '{file}': {e}"))?;
+    if !path.is_file() {
+        return Err(format!("no file '{file}' (the LUT or transform to apply)"));
+    }
+    Ok(path.to_string_lossy().into_owned())
+}
+
+/// A file transform's processor, on a raw config: the file's own error,
+/// named, when it does not read.
+pub fn read(transform: Transform, file: &FileName) -> Result<ocio::Processor, String> {
+    super::processor(&Config::create_raw(), transform)
+        .map_err(|e| format!("cannot apply '{}': {e}", file.0))
+}
+
+/// OCIO's LUT interpolation, by name.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interp(pub Interpolation);
+
+impl Value for Interp {
+    fn parse(text: &str) -> Result<Self, String> {
+        use Interpolation::*;
+        let values = [Default, Nearest, Linear, Tetrahedral, Cubic, Best];
+        choice(text, Self::CHOICES, &values, "interpolation").map(Interp)
+    }
+    const CHOICES: &'static [&'static str] = &[
+        "default",
+        "nearest",
+        "linear",
+        "tetrahedral",
+        "cubic",
+        "best",
+    ];
+}

@@ -1,0 +1,432 @@
+//! OpenColorIO's transforms (the `ocio` crate, specs/colour-library.md):
+//! `colorconvert`, `ociodisplay`, `ociolook`, `cdl` and `filetransform`, one
+//! file each. Each builds its processor once, when the graph is built, and
+//! applies it to the colour of each band through grade's `Colour` node
+//! (layers, alpha, half widened to f32 and back). This file: the config
+//! (`--config`, `$OCIO`, the built-in one), names checked against it, and
+//! the processor as a colour map. Semantics: specs/ops.md, "Colour (OpenColorIO)".
+
+pub mod cdl;
+pub mod colorconvert;
+pub mod filetransform;
+pub mod ociodisplay;
+pub mod ociolook;
+
+use super::declare::{Args, FileName};
+use super::grade::{Colour, ColourMap};
+use crate::engine::graph::{GraphBuilder, NodeId};
+use crate::io::parts::unknown;
+use ocio::{Config, CpuProcessor, Processor, Transform, TransformDirection};
+
+/// The config without `--config` or `$OCIO`: OCIO's ACES CG config as the
+/// crate embeds it (v4.0.0, ACES 2.0; PyPI's 2.6 names v5.0.0 so).
+pub const BUILTIN: &str = "ocio://cg-config-latest";
+
+/// The config: `--config FILE|ocio://NAME`, else `$OCIO` when set and not
+/// empty, else the built-in one (not the crate's `create_from_env`, which
+/// gives a raw config without `$OCIO`).
+pub fn config(given: Option<&FileName>) -> Result<Config, String> {
+    let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
+    let (source, from) = match (given, env) {
+        (Some(file), _) => (file.0.clone(), "--config"),
+        (None, Some(file)) => (file, "$OCIO"),
+        (None, None) => (BUILTIN.to_string(), "the built-in default"),
+    };
+    Config::create_from_file(&source).map_err(|e| {
+        format!("cannot load the OCIO config '{source}' ({from}): {e}; give --config FILE or ocio://NAME")
+    })
+}
+
+/// A colour space, role or alias as the config spells its canonical name;
+/// an error listing the colour spaces when there is none of that name.
+pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
+    if let Some(space) = config.get_color_space(name) {
+        return Ok(space.name().to_string());
+    }
+    let spaces: Vec<String> = (0..config.num_color_spaces())
+        .map(|i| config.color_space_name_by_index(i).to_string())
+        .collect();
+    let mut known = spaces.clone();
+    for space in &spaces {
+        if let Some(cs) = config.get_color_space(space) {
+            known.extend(cs.aliases().iter().cloned());
+        }
+    }
+    known.extend((0..config.num_roles()).map(|i| config.role_name(i).to_string()));
+    Err(unknown("colour space", name, &spaces.join(", "), &known))
+}
+
+/// `name` among `names` (OCIO compares display, view and look names
+/// without case), as `names` spells it; else an error listing them.
+pub fn one_of(what: &str, name: &str, names: Vec<String>) -> Result<String, String> {
+    match names.iter().find(|n| n.eq_ignore_ascii_case(name)) {
+        Some(found) => Ok(found.clone()),
+        None => Err(unknown(what, name, &names.join(", "), &names)),
+    }
+}
+
+/// A look list (`A, +B, -C`, OCIO's grammar: `,` or `:` between looks, `+`
+/// forward, `-` inverse) with each look checked against the config.
+pub fn looks(config: &Config, text: &str) -> Result<String, String> {
+    let names: Vec<String> = (0..config.num_looks())
+        .map(|i| config.look_name_by_index(i).to_string())
+        .collect();
+    let mut checked = Vec::new();
+    for look in text.split([',', ':']).map(str::trim) {
+        let (sign, name) = match look.strip_prefix(['+', '-']) {
+            Some(rest) => (&look[..1], rest.trim()),
+            None => ("", look),
+        };
+        checked.push(format!("{sign}{}", one_of("look", name, names.clone())?));
+    }
+    Ok(checked.join(", "))
+}
+
+/// The forward or inverse direction.
+pub fn direction(inverse: bool) -> TransformDirection {
+    match inverse {
+        true => TransformDirection::Inverse,
+        false => TransformDirection::Forward,
+    }
+}
+
+/// A transform's processor in a config (a raw one for files and CDLs).
+pub fn processor(config: &Config, transform: Transform) -> Result<Processor, String> {
+    config
+        .get_processor_for_transform(&transform, TransformDirection::Forward)
+        .map_err(|e| e.to_string())
+}
+
+/// An OCIO CPU processor as a colour map: built once per command, shared by
+/// every band of the node (the engine runs them on the pool at once).
+pub struct Ocio(CpuProcessor);
+
+impl ColourMap for Ocio {
+    fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
+        // OCIO's pixels are packed RGBA: alpha 1, as PyPI's applyRGB has it
+        // (the node's alpha, if any, passes untouched).
+        let [r, g, b] = rgb;
+        let mut pixels: Vec<[f32; 4]> = (0..r.len()).map(|i| [r[i], g[i], b[i], 1.0]).collect();
+        self.0.apply_pixels(&mut pixels);
+        for (i, [pr, pg, pb, _]) in pixels.into_iter().enumerate() {
+            (r[i], g[i], b[i]) = (pr, pg, pb);
+        }
+    }
+}
+
+/// The node applying `processor` to the selected layers' colour, divided by
+/// alpha first and multiplied again after unless `no_unpremult`.
+pub fn add(
+    processor: Processor,
+    no_unpremult: bool,
+    args: &Args,
+    graph: &mut GraphBuilder,
+    inputs: &[NodeId],
+) -> NodeId {
+    let map = Ocio(processor.default_cpu_processor());
+    graph.add(Colour::new(map, !no_unpremult, &args.layers), inputs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::graph::{Node, Op};
+    use crate::ops::declare::Operation;
+    use crate::ops::layers::Selection;
+    use crate::ops::testing::{compute, image, sample};
+
+    /// Operation `op` built from its declared parameters, as a job file or
+    /// the command line would give them: its one node.
+    pub fn built(
+        op: &Operation,
+        values: &[(&'static str, &str)],
+        layers: &[&str],
+    ) -> Result<Box<dyn Op>, String> {
+        let args = Args {
+            op: op.name,
+            values: values.iter().map(|&(k, v)| (k, v.to_string())).collect(),
+            layers: Selection {
+                layers: layers.iter().map(|l| l.to_string()).collect(),
+                ..Default::default()
+            },
+            straight: false,
+            job_file: false,
+        };
+        let (mut graph, inputs) = GraphBuilder::with_inputs(1);
+        (op.build)(&args, &mut graph, &inputs)?;
+        match graph.finish().nodes.pop() {
+            Some(Node::Op { op, .. }) => Ok(op),
+            _ => panic!("{} adds a node", op.name),
+        }
+    }
+
+    /// RGBA (alpha 0, 0.25, 0.5, 1 by column), Z and a `diffuse` layer.
+    fn rgba() -> crate::engine::strip::Rows {
+        let alpha = |x: i32, _| [0.0, 0.25, 0.5, 1.0][x as usize % 4];
+        let colour = |k: f32| move |x: i32, y: i32| (0.07 * (x + 2 * y) as f32 - 0.1) * k;
+        image(
+            8,
+            3,
+            &[
+                ("A", &alpha),
+                ("B", &colour(0.5)),
+                ("G", &colour(1.0)),
+                ("R", &colour(1.5)),
+                ("Z", &|x, y| 100.0 + (x * y) as f32),
+                ("diffuse.B", &colour(0.2)),
+                ("diffuse.G", &colour(0.3)),
+                ("diffuse.R", &colour(0.4)),
+            ],
+        )
+    }
+
+    #[test]
+    fn colour_is_unpremultiplied_converted_and_premultiplied_again() {
+        let input = rgba();
+        let cpu = v1()
+            .get_processor("ACEScg", "ACEScct")
+            .unwrap()
+            .default_cpu_processor();
+        let values = [
+            ("config", "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1"),
+            ("from", "ACEScg"),
+            ("to", "ACEScct"),
+        ];
+        let op = built(&colorconvert::COLORCONVERT, &values, &[]).unwrap();
+        let out = compute(op.as_ref(), &[&input]).unwrap();
+        let plain = [values.to_vec(), vec![("no_unpremult", "true")]].concat();
+        let as_is = compute(
+            built(&colorconvert::COLORCONVERT, &plain, &[])
+                .unwrap()
+                .as_ref(),
+            &[&input],
+        )
+        .unwrap();
+        for y in 0..3 {
+            for x in 0..8 {
+                let at =
+                    |rows: &crate::engine::strip::Rows, c: &str| sample(rows, c, x, y).unwrap();
+                let a = at(&input, "A");
+                let c = ["R", "G", "B"].map(|n| at(&input, n));
+                let mut straight = c.map(|v| if a == 0.0 { v } else { v / a });
+                cpu.apply_rgb(&mut straight);
+                let mut plain = c;
+                cpu.apply_rgb(&mut plain);
+                for (k, n) in ["R", "G", "B"].into_iter().enumerate() {
+                    // Alpha 0: 0, as premult makes it (specs/ops.md).
+                    assert_eq!(at(&out, n), straight[k] * a, "{n} at {x},{y}");
+                    assert_eq!(at(&as_is, n), plain[k], "{n} at {x},{y} as is");
+                }
+                for n in ["A", "Z", "diffuse.R", "diffuse.G", "diffuse.B"] {
+                    assert_eq!(at(&out, n).to_bits(), at(&input, n).to_bits(), "{n} passes");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_layer_is_converted_and_the_rest_passes() {
+        let input = rgba();
+        let values = [
+            ("config", "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1"),
+            ("from", "ACES2065-1"),
+            ("to", "ACEScg"),
+        ];
+        let op = built(&colorconvert::COLORCONVERT, &values, &["diffuse"]).unwrap();
+        let out = compute(op.as_ref(), &[&input]).unwrap();
+        for (c, before) in out.channels.iter().zip(&input.channels) {
+            let (plane_out, plane_in) = (
+                &out.planes[out.channel_index(&c.name.to_string()).unwrap()],
+                &input.planes[input.channel_index(&before.name.to_string()).unwrap()],
+            );
+            let changed = plane_out != plane_in;
+            assert_eq!(
+                changed,
+                c.name.to_string().starts_with("diffuse."),
+                "{}",
+                c.name
+            );
+        }
+    }
+
+    /// ASC CDL in f64 with OCIO's no-clamp style: power only above 0,
+    /// saturation about Rec.709 luma.
+    fn asc(
+        rgb: [f64; 3],
+        slope: [f64; 3],
+        offset: [f64; 3],
+        power: [f64; 3],
+        sat: f64,
+    ) -> [f64; 3] {
+        let v: Vec<f64> = (0..3)
+            .map(|i| {
+                let v = rgb[i] * slope[i] + offset[i];
+                if v > 0.0 {
+                    v.powf(power[i])
+                } else {
+                    v
+                }
+            })
+            .collect();
+        let luma = 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2];
+        [0, 1, 2].map(|i| luma + sat * (v[i] - luma))
+    }
+
+    #[test]
+    fn cdl_values_follow_the_asc_formula() {
+        let input = rgba();
+        let values = [
+            ("slope", "1.2,1,0.8"),
+            ("offset", "0.02,0,-0.01"),
+            ("power", "1.4,1,0.7"),
+            ("saturation", "0.6"),
+            ("no_unpremult", "true"),
+        ];
+        let out = compute(built(&cdl::CDL, &values, &[]).unwrap().as_ref(), &[&input]).unwrap();
+        for y in 0..3 {
+            for x in 0..8 {
+                let c = ["R", "G", "B"].map(|n| f64::from(sample(&input, n, x, y).unwrap()));
+                let want = asc(c, [1.2, 1.0, 0.8], [0.02, 0.0, -0.01], [1.4, 1.0, 0.7], 0.6);
+                for (k, n) in ["R", "G", "B"].into_iter().enumerate() {
+                    let got = f64::from(sample(&out, n, x, y).unwrap());
+                    // OCIO's CPU renderer takes its fast pow (specs/ops.md).
+                    assert!(
+                        (got - want[k]).abs() <= 1e-3 * want[k].abs().max(1e-2),
+                        "{n} at {x},{y}: {got} vs {}",
+                        want[k]
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn each_operation_refuses_what_it_cannot_do_in_one_line() {
+        let v4 = ("config", "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5");
+        let error =
+            |op, values: &[(&'static str, &str)]| built(op, values, &[]).err().expect("an error");
+        let message = error(
+            &ociodisplay::OCIODISPLAY,
+            &[v4, ("display", "sRGB - Dislpay")],
+        );
+        assert!(
+            message.starts_with("no display 'sRGB - Dislpay' (displays: sRGB - Display, "),
+            "{message}"
+        );
+        assert!(
+            message.ends_with("did you mean 'sRGB - Display'?"),
+            "{message}"
+        );
+        let message = error(
+            &ociodisplay::OCIODISPLAY,
+            &[v4, ("display_view", "ACES 2.0 - SDR 100 nits")],
+        );
+        assert!(
+            message.contains("(views: ACES 2.0 - SDR 100 nits (Rec.709), Un-tone-mapped"),
+            "{message}"
+        );
+        let message = error(&ociolook::OCIOLOOK, &[v4, ("look", "grade")]);
+        assert!(
+            message.starts_with("no look 'grade' (looks: ACES 1.3 Reference Gamut Compression)"),
+            "{message}"
+        );
+        let message = error(
+            &colorconvert::COLORCONVERT,
+            &[v4, ("from", "ACEScg"), ("to", "sRGB")],
+        );
+        assert!(
+            message.starts_with("no colour space 'sRGB' (colour spaces: sRGB - Display, "),
+            "{message}"
+        );
+        let message = error(&cdl::CDL, &[("file", "x.cc"), ("slope", "2")]);
+        assert!(message.contains("not both"), "{message}");
+        assert!(error(&cdl::CDL, &[("id", "a")]).contains("picks a correction of --file"));
+        let message = error(
+            &filetransform::FILETRANSFORM,
+            &[("file", "/nowhere/grade.cube")],
+        );
+        assert_eq!(
+            message,
+            "no file '/nowhere/grade.cube' (the LUT or transform to apply)"
+        );
+        assert!(message.lines().count() == 1);
+    }
+
+    fn v1() -> Config {
+        config(Some(&FileName(
+            "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1".into(),
+        )))
+        .unwrap()
+    }
+
+    #[test]
+    fn names_aliases_and_roles_become_the_configs_spelling() {
+        let config = v1();
+        assert_eq!(colour_space(&config, "ACEScg").unwrap(), "ACEScg");
+        assert_eq!(colour_space(&config, "acescg").unwrap(), "ACEScg");
+        assert_eq!(colour_space(&config, "ACES - ACEScg").unwrap(), "ACEScg");
+        assert_eq!(colour_space(&config, "scene_linear").unwrap(), "ACEScg");
+    }
+
+    #[test]
+    fn an_unknown_name_lists_the_ones_there_are_and_suggests_a_near_miss() {
+        let config = v1();
+        let message = colour_space(&config, "ACEScgg").unwrap_err();
+        assert!(message.starts_with("no colour space 'ACEScgg' (colour spaces: "));
+        assert!(
+            message.contains("ACES2065-1, ACEScc, ACEScct, ACEScg"),
+            "{message}"
+        );
+        assert!(message.ends_with("; did you mean 'ACEScg'?"), "{message}");
+        assert!(!colour_space(&config, "Rec.2020 Nothing")
+            .unwrap_err()
+            .contains("did you mean"));
+        let message = looks(&config, "+ACES 1.3 Reference Gamut Compresion").unwrap_err();
+        assert!(message.contains("did you mean 'ACES 1.3 Reference Gamut Compression'"));
+        assert_eq!(
+            looks(&config, "-aces 1.3 reference gamut compression").unwrap(),
+            "-ACES 1.3 Reference Gamut Compression"
+        );
+    }
+
+    #[test]
+    fn the_config_comes_from_the_option_else_ocio_else_the_builtin() {
+        let message = config(Some(&FileName("/nowhere/config.ocio".into())))
+            .err()
+            .unwrap();
+        assert!(
+            message.starts_with("cannot load the OCIO config '/nowhere/config.ocio' (--config)")
+        );
+        let message = config(Some(&FileName("ocio://no-such-config".into())))
+            .err()
+            .unwrap();
+        assert!(message.contains("no-such-config"), "{message}");
+        // $OCIO is read by the process; the suite's colour module tests it.
+        assert!(config(Some(&FileName(BUILTIN.into()))).is_ok());
+    }
+
+    #[test]
+    fn the_map_is_the_processor_on_each_pixel() {
+        let config = v1();
+        let cpu = config
+            .get_processor("ACEScg", "ACEScct")
+            .unwrap()
+            .default_cpu_processor();
+        let mut rgb = [
+            vec![0.18f32, 0.0, 4.0],
+            vec![0.5, 1.0, -0.1],
+            vec![0.02, 2.0, 0.0],
+        ];
+        let before = rgb.clone();
+        let processor = config.get_processor("ACEScg", "ACEScct").unwrap();
+        Ocio(processor.default_cpu_processor()).apply(&mut rgb);
+        for i in 0..3 {
+            let mut pixel = [before[0][i], before[1][i], before[2][i]];
+            cpu.apply_rgb(&mut pixel);
+            assert_eq!([rgb[0][i], rgb[1][i], rgb[2][i]], pixel);
+        }
+        // ACEScct of 0.18 (the ACES spec: (log2(x) + 9.72) / 17.52).
+        let expected = (0.18f32.log2() + 9.72) / 17.52;
+        assert!((rgb[0][0] - expected).abs() < 1e-5, "{}", rgb[0][0]);
+    }
+}

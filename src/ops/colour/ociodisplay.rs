@@ -1,0 +1,68 @@
+//! `ociodisplay`: scene colour to a display through one of its views (OCIO's
+//! DisplayViewTransform; oiiotool's `--ociodisplay`, Nuke's OCIODisplay);
+//! `--looks` replaces the view's looks, as oiiotool's `looks=` does (OCIO's
+//! LegacyViewingPipeline with its looks override).
+
+use super::super::declare::{params, FileName, Operation};
+use super::colorconvert::COLORCONVERT;
+use ocio::apphelpers::legacy_viewing_pipeline::LegacyViewingPipeline;
+use ocio::{DisplayViewTransform, Transform};
+
+pub const OCIODISPLAY: Operation = Operation {
+    name: "ociodisplay",
+    about: "OpenColorIO: scene colour to a display through one of its views \
+            (default: the config's default display and its default view)",
+    params: OciodisplayParams::PARAMS,
+    build: |args, graph, inputs| {
+        let p = OciodisplayParams::read(args)?;
+        let config = super::config(p.config.as_ref())?;
+        let from = super::colour_space(&config, &p.from)?;
+        let displays = (0..config.num_displays())
+            .map(|i| config.display(i))
+            .collect();
+        let display = match &p.display {
+            Some(name) => super::one_of("display", name, displays)?,
+            None => config.default_display(),
+        };
+        let views = (0..config.num_views(&display))
+            .map(|i| config.view(&display, i))
+            .collect();
+        let view = match &p.display_view {
+            Some(name) => super::one_of("view", name, views)?,
+            None => config.default_view(&display),
+        };
+        let transform = DisplayViewTransform::new(&from, &display, &view);
+        let processor = match &p.looks {
+            None => super::processor(&config, Transform::DisplayView(transform))?,
+            Some(looks) => {
+                let mut pipeline = LegacyViewingPipeline::new();
+                pipeline.set_display_view_transform(Some(&transform));
+                pipeline.set_looks_override_enabled(true);
+                pipeline.set_looks_override(&super::looks(&config, looks)?);
+                pipeline.get_processor(&config).map_err(|e| e.to_string())?
+            }
+        };
+        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+    },
+    ..COLORCONVERT
+};
+
+params! {
+    pub struct OciodisplayParams {
+        /// The input's colour space (a name, alias or role of the config).
+        from: String = "scene_linear",
+        /// The display (default: the config's default display).
+        display: Option<String>,
+        /// The display's view (default: the display's default view). `--view`
+        /// is the stereo view, as for every operation.
+        display_view: Option<String>,
+        /// Looks applied instead of the view's own (a comma list, `-` for
+        /// inverse).
+        looks: Option<String>,
+        /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
+        /// else ocio://cg-config-latest.
+        config: Option<FileName>,
+        /// Transform the colour as it is, not divided by alpha first.
+        no_unpremult: bool,
+    }
+}
