@@ -31,6 +31,13 @@ pub trait Op: Send + Sync {
         Ok(())
     }
 
+    /// The output's display window given its inputs' (a resize's: the new
+    /// size), or `None`: the input's whose header the output keeps, as it
+    /// is. An error (a size the op cannot take) ends the frame.
+    fn display_window(&self, _inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+        Ok(None)
+    }
+
     /// The output's data window, given each input's.
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         inputs

@@ -344,6 +344,26 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             )));
         }
     }
+    // Display windows first: an op whose geometry follows them (a resize's
+    // scale) learns them before it is asked for data windows and regions.
+    let displays = graph.evaluate(
+        |i| Ok((header_of(i).shared_attributes.display_window, false)),
+        |op, args: &[std::result::Result<(IntegerBounds, bool), String>]| {
+            let args: Vec<(IntegerBounds, bool)> = args
+                .iter()
+                .cloned()
+                .collect::<std::result::Result<_, _>>()?;
+            let windows: Vec<IntegerBounds> = args.iter().map(|a| a.0).collect();
+            Ok(match op.display_window(&windows)? {
+                Some(window) => (window, true),
+                None => (
+                    windows.last().copied().unwrap_or(IntegerBounds::zero()),
+                    args.iter().any(|a| a.1),
+                ),
+            })
+        },
+    );
+    let (display, resized) = displays[graph.output()].clone().map_err(located)?;
     let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
     let windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
     let window = windows[graph.output()];
@@ -365,6 +385,9 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     let mut output_channels = channels[graph.output()].clone();
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
+    if resized {
+        header.shared_attributes.display_window = display;
+    }
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;

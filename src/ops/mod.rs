@@ -2,6 +2,7 @@
 //! strips, each declared once (`declare::Operation`) and listed in `ALL`.
 
 pub mod blur;
+pub mod crop;
 pub mod declare;
 pub mod defocus;
 pub mod diffrender;
@@ -11,6 +12,7 @@ pub mod matte;
 pub mod merge;
 pub mod morphology;
 pub mod premult;
+pub mod resize;
 pub mod shuffle;
 pub mod stereo;
 #[cfg(test)]
@@ -44,6 +46,9 @@ pub const ALL: &[&Operation] = &[
     &grade::SATURATION,
     &shuffle::SHUFFLE,
     &shuffle::COPY,
+    &resize::RESIZE,
+    &crop::CROP,
+    &crop::PAD,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {
