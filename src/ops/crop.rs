@@ -12,6 +12,7 @@ use super::declare::{input, params, Args, Operation, Value};
 use crate::engine::graph::{intersection, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use std::sync::OnceLock;
 
 pub const CROP: Operation = Operation {
     name: "crop",
@@ -63,6 +64,7 @@ fn build_crop(args: &Args, graph: &mut GraphBuilder, inputs: &[NodeId]) -> Resul
         window: Window::Region(p.region.0),
         display: p.display || p.cut,
         cut: p.cut,
+        placed: OnceLock::new(),
     };
     Ok(graph.add(op, inputs))
 }
@@ -73,6 +75,7 @@ fn build_pad(args: &Args, graph: &mut GraphBuilder, inputs: &[NodeId]) -> Result
         window: Window::Grow(p.by),
         display: p.display,
         cut: false,
+        placed: OnceLock::new(),
     };
     Ok(graph.add(op, inputs))
 }
@@ -148,13 +151,16 @@ impl Value for Sides {
 enum Window {
     Region(IntegerBounds),
     Grow(Sides),
+    /// The image placed in a format (`reformat`): at its top left corner,
+    /// or centred.
+    Place(IntegerBounds, bool),
 }
 
 impl Window {
     /// The new window, from the one it changes.
     fn of(&self, old: IntegerBounds) -> IntegerBounds {
         match self {
-            Window::Region(region) => *region,
+            Window::Region(region) | Window::Place(region, _) => *region,
             Window::Grow(Sides([l, t, r, b])) => IntegerBounds::new(
                 (old.position.x() - l, old.position.y() - t),
                 (
@@ -169,15 +175,30 @@ impl Window {
 pub struct Crop {
     window: Window,
     display: bool,
-    /// Moved to the origin (a region only).
+    /// Moved: to the origin (a cut), or into a format.
     cut: bool,
+    /// A placed image's shift, from the first frame (`reformat`'s size
+    /// follows its input's, which a sequence keeps).
+    placed: OnceLock<(i32, i32)>,
 }
 
 impl Crop {
-    /// How far the output is moved from the input: the region's corner for
-    /// a cut, else nothing.
+    /// A format's display window with `input` placed in it (`reformat`).
+    pub fn place(format: IntegerBounds, center: bool) -> Self {
+        Crop {
+            window: Window::Place(format, center),
+            display: true,
+            cut: true,
+            placed: OnceLock::new(),
+        }
+    }
+
+    /// How far the output is moved from the input (output pixel (x, y) is
+    /// input pixel (x + dx, y + dy)): the region's corner for a cut, the
+    /// placement for `reformat`, else nothing.
     fn shift(&self) -> (i32, i32) {
         match (&self.window, self.cut) {
+            (Window::Place(..), _) => *self.placed.get().expect("the display window comes first"),
             (Window::Region(r), true) => (r.position.x(), r.position.y()),
             _ => (0, 0),
         }
@@ -190,6 +211,30 @@ fn moved(w: IntegerBounds, (dx, dy): (i32, i32)) -> IntegerBounds {
 
 impl Op for Crop {
     fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+        if let Window::Place(format, center) = self.window {
+            // The image's display window's corner to the format's, or its
+            // centre to the format's centre (whole pixels, as oiiotool's --fit).
+            let d = inputs[0];
+            let (ox, oy) = match center {
+                true => (
+                    (format.size.width() as i32 - d.size.width() as i32) / 2,
+                    (format.size.height() as i32 - d.size.height() as i32) / 2,
+                ),
+                false => (0, 0),
+            };
+            let shift = (
+                d.position.x() - ox - format.position.x(),
+                d.position.y() - oy - format.position.y(),
+            );
+            if *self.placed.get_or_init(|| shift) != shift {
+                return Err(
+                    "reformat: the display window changed size within the sequence: \
+                            reformat one size at a time"
+                        .into(),
+                );
+            }
+            return Ok(Some(format));
+        }
         let (dx, dy) = self.shift();
         Ok(self
             .display
@@ -200,7 +245,10 @@ impl Op for Crop {
         let (dx, dy) = self.shift();
         let window = match self.window {
             // Grown from the data window; a region as it is.
-            Window::Grow(_) if inputs[0].size.area() == 0 => return IntegerBounds::zero(),
+            Window::Grow(_) | Window::Place(..) if inputs[0].size.area() == 0 => {
+                return IntegerBounds::zero()
+            }
+            Window::Place(..) => inputs[0],
             _ => self.window.of(inputs[0]),
         };
         moved(window, (-dx, -dy))

@@ -12,6 +12,7 @@ pub mod matte;
 pub mod merge;
 pub mod morphology;
 pub mod premult;
+pub mod reformat;
 pub mod resize;
 pub mod shuffle;
 pub mod stereo;
@@ -49,6 +50,7 @@ pub const ALL: &[&Operation] = &[
     &resize::RESIZE,
     &crop::CROP,
     &crop::PAD,
+    &reformat::REFORMAT,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

@@ -79,21 +79,65 @@ impl Value for Size {
     }
 }
 
-/// The new size: given, or the old one scaled.
+/// The new size: given, the old one scaled, or fitted to a format.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Target {
     Size(Size),
     Scale(f32),
+    Fit(Size, Fit),
+}
+
+/// How an image is fitted to a format (Nuke's Reformat resize types).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fit {
+    /// Scaled to the format's width, aspect kept.
+    Width,
+    /// To its height.
+    Height,
+    /// Inside it, whole (letterboxed).
+    Inside,
+    /// Covering it (cropped to it by the display window).
+    Fill,
+    /// To both sides, aspect changed.
+    Distort,
+}
+
+impl Value for Fit {
+    fn parse(text: &str) -> Result<Self, String> {
+        use Fit::*;
+        choice(
+            text,
+            Self::CHOICES,
+            &[Width, Height, Inside, Fill, Distort],
+            "fit",
+        )
+    }
+    const CHOICES: &'static [&'static str] = &["width", "height", "fit", "fill", "distort"];
 }
 
 impl Target {
-    /// The new length of a side of `old` pixels along `axis`.
-    fn length(self, axis: Axis, old: usize) -> usize {
-        match (self, axis) {
-            (Target::Size(s), Axis::X) => s.width,
-            (Target::Size(s), Axis::Y) => s.height,
-            (Target::Scale(f), _) => ((old as f64 * f as f64).round() as usize).max(1),
-        }
+    /// The new length along `axis` of an image whose display window is `old`.
+    fn length(self, axis: Axis, old: IntegerBounds) -> usize {
+        let (w, h) = (old.size.width() as f64, old.size.height() as f64);
+        let side = match axis {
+            Axis::X => w,
+            Axis::Y => h,
+        };
+        let scale = match self {
+            Target::Size(s) => return [s.width, s.height][(axis == Axis::Y) as usize],
+            Target::Scale(f) => f as f64,
+            Target::Fit(format, fit) => {
+                let (sx, sy) = (format.width as f64 / w, format.height as f64 / h);
+                match fit {
+                    Fit::Width => sx,
+                    Fit::Height => sy,
+                    Fit::Inside => sx.min(sy),
+                    Fit::Fill => sx.max(sy),
+                    Fit::Distort => [sx, sy][(axis == Axis::Y) as usize],
+                }
+            }
+        };
+        ((side * scale).round() as usize).max(1)
     }
 }
 
@@ -306,9 +350,11 @@ impl Pass {
 
 impl Op for Pass {
     fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+        // The length from the original's display window (the vertical
+        // pass's second input: the first's is already resized across).
         let display = inputs[0];
         let from = self.axis.range(display);
-        let length = self.target.length(self.axis, from.len());
+        let length = self.target.length(self.axis, inputs[inputs.len() - 1]);
         let new = Geometry::new(from, length, self.filter);
         let first = self.geometry.get_or_init(|| new.clone());
         if *first != new {

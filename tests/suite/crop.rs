@@ -49,7 +49,8 @@ fn input(dir: &Path) -> (std::path::PathBuf, Img) {
     let path = dir.join("in.exr");
     let img = random_rgba(11, 3, 2, 50, 40, Kind::Half, true);
     write_image(&path, &img, compression("zip"), LineOrder::Increasing);
-    (path, read_image(&path))
+    let img = read_image(&path);
+    (path, img)
 }
 
 #[test]
