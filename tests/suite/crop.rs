@@ -134,7 +134,7 @@ fn crop_and_pad_job_nodes_and_bad_regions() {
     std::fs::write(
         &job,
         format!(
-            "[[node]]\nread = \"{}\"\n\n[[node]]\nop = \"crop\"\nregion = \"30x20+40+30\"\ncut = true\n\n[[node]]\nwrite = \"{}\"\n",
+            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"cut\"\nop = \"crop\"\nregion = \"30x20+40+30\"\ncut = true\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"cut\"]\n",
             s(&path),
             s(&b)
         ),
