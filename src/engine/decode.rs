@@ -216,6 +216,7 @@ impl InputCursor {
         let (top, bottom) = (w.position.y(), w.end().y());
         let lines = self.level.block.y() as i32;
         self.deep.is_none()
+            && columns.1 > 0
             && self.carried.is_empty()
             && !subsampling::any(header)
             && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)

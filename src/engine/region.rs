@@ -104,6 +104,16 @@ impl Regions {
             rects: vec![IntegerBounds::zero(); roots.len()],
             resamplers,
         };
+        // A zone no resampler reads (an input the graph leaves unread)
+        // keeps the output's rows and columns, as every node did before.
+        let read: Vec<bool> = (0..roots.len())
+            .map(|z| z == output_zone || regions.resamplers.iter().any(|&(_, into)| into == z))
+            .collect();
+        for (z, rect) in regions.rects.iter_mut().enumerate() {
+            if !read[z] {
+                *rect = output;
+            }
+        }
         regions.rects[output_zone] = output;
         // Zones form a DAG: as many passes as zones settle every request.
         for _ in 0..roots.len() {
@@ -135,8 +145,14 @@ impl Regions {
     /// nothing is asked.
     pub fn spans(&self, graph: &Graph, rows: Range<i32>) -> Vec<Range<i32>> {
         let output = self.zone[graph.output()];
-        let mut spans: Vec<Option<Range<i32>>> = vec![None; self.rects.len()];
-        spans[output] = Some(rows);
+        // The output's zone, and any zone no resampler reads, stream the
+        // output's rows.
+        let mut spans: Vec<Option<Range<i32>>> = (0..self.rects.len())
+            .map(|z| {
+                let read = self.resamplers.iter().any(|&(_, into)| into == z);
+                (z == output || !read).then(|| rows.clone())
+            })
+            .collect();
         for _ in 0..self.rects.len() {
             for &(n, into) in self.resamplers.iter().rev() {
                 let Some(out) = spans[self.zone[n]].clone().filter(|r| r.end > r.start) else {
