@@ -1,7 +1,8 @@
 //! Runs the graph over strips as they arrive: each node keeps a window of the
 //! rows it produced, as long as a consumer's halo still needs them.
 
-use super::graph::{Graph, Node};
+use super::graph::{Graph, Node, Op};
+use super::region::{rows_of, Regions};
 use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -33,24 +34,30 @@ pub struct Composer<'g> {
     /// Output rows are handed out in whole multiples of this (a block).
     emit_multiple: usize,
     window: IntegerBounds,
+    /// Per node: the rows and columns its window covers (`region.rs`).
+    rects: Vec<IntegerBounds>,
 }
 
 impl<'g> Composer<'g> {
-    /// `channels[n]` and `valid[n]`: each node's channels and data window.
+    /// `channels[n]` and `valid[n]`: each node's channels and data window;
+    /// `regions`: the rows and columns each covers, the output's first.
     pub fn new(
         graph: &'g Graph,
-        window: IntegerBounds,
+        regions: &Regions,
         channels: &[Vec<ChannelDescription>],
         valid: &[IntegerBounds],
         emit_multiple: usize,
     ) -> Self {
+        let window = regions.rect(graph.output());
         let top = window.position.y();
+        let rects: Vec<IntegerBounds> = (0..graph.nodes.len()).map(|n| regions.rect(n)).collect();
         let windows = (0..graph.nodes.len())
             .map(|n| {
+                let rect = rects[n];
                 Rows::zeros(
-                    window.position.x(),
-                    top,
-                    window.size.width(),
+                    rect.position.x(),
+                    rect.position.y(),
+                    rect.size.width(),
                     0,
                     channels[n].clone(),
                     valid[n],
@@ -71,11 +78,50 @@ impl<'g> Composer<'g> {
             fed: top,
             emit_multiple,
             window,
+            rects,
         }
     }
 
     fn bottom(&self) -> i32 {
         self.window.end().y()
+    }
+
+    /// How far node `n` can compute from its inputs' windows, from `start`.
+    fn computable(&self, n: usize, op: &dyn Op, inputs: &[usize], start: i32) -> i32 {
+        let bottom = self.rects[n].end().y();
+        // A source (no inputs) produces as far as the inputs were fed.
+        let ready = inputs
+            .iter()
+            .map(|&i| self.windows[i].end())
+            .min()
+            .unwrap_or(self.fed);
+        if op.request(self.rects[n]).is_none() {
+            // The fast path: inputs share the node's rows.
+            return if ready >= bottom {
+                ready
+            } else {
+                ready - op.halo() as i32
+            };
+        }
+        // Resampling: the last row whose request the inputs hold (requests
+        // grow with the rows asked, so a bisection finds it).
+        let fits = |end: i32| {
+            let asked = op.request(rows_of(self.rects[n], &(start..end)));
+            inputs.iter().all(|&i| {
+                let (held, rect) = (self.windows[i].end(), self.rects[i]);
+                let asked = asked.expect("a resampling op").end().y();
+                held >= rect.end().y() || asked.min(rect.end().y()) <= held
+            })
+        };
+        let (mut good, mut bad) = (start, bottom + 1);
+        while bad - good > 1 {
+            let mid = good + (bad - good) / 2;
+            match fits(mid) {
+                true => good = mid,
+                false => bad = mid,
+            }
+        }
+        good
     }
 
     /// Takes strip `rows` of every input and returns the output rows that
@@ -96,19 +142,8 @@ impl<'g> Composer<'g> {
                     self.windows[n].append(strip);
                 }
                 Node::Op { op, inputs, .. } => {
-                    let halo = op.halo() as i32;
-                    // A source (no inputs) produces as far as the inputs were fed.
-                    let ready = inputs
-                        .iter()
-                        .map(|&i| self.windows[i].end())
-                        .min()
-                        .unwrap_or(self.fed);
-                    let end = if ready >= self.bottom() {
-                        ready
-                    } else {
-                        ready - halo
-                    };
                     let start = self.windows[n].end();
+                    let end = self.computable(n, op.as_ref(), inputs, start);
                     if end > start {
                         // Computed in place, band by band on the pool: nodes
                         // come after their inputs, so those are borrowed apart.
@@ -166,11 +201,19 @@ impl<'g> Composer<'g> {
             i32::MAX
         };
         for &c in &self.consumers[n] {
-            let halo = match &self.graph.nodes[c] {
-                Node::Op { op, .. } => op.halo() as i32,
-                Node::Input(_) => 0,
+            let Node::Op { op, .. } = &self.graph.nodes[c] else {
+                continue;
             };
-            keep_from = keep_from.min(self.windows[c].end() - halo);
+            let end = self.windows[c].end();
+            // The first row the consumer's next output row reads.
+            let first = match op.request(self.rects[c]) {
+                None => end - op.halo() as i32,
+                Some(_) if end >= self.rects[c].end().y() => i32::MAX,
+                Some(_) => op
+                    .request(rows_of(self.rects[c], &(end..end + 1)))
+                    .map_or(end, |r| r.position.y()),
+            };
+            keep_from = keep_from.min(first);
         }
         self.windows[n].drop_rows_before(keep_from);
     }
@@ -232,6 +275,10 @@ mod tests {
         }
     }
 
+    fn regions(graph: &Graph, window: IntegerBounds, valid: &[IntegerBounds]) -> Regions {
+        Regions::new(graph, window, valid).unwrap()
+    }
+
     #[test]
     fn bands_are_a_few_per_thread_and_never_tiny() {
         let pool = rayon::ThreadPoolBuilder::new()
@@ -282,7 +329,13 @@ mod tests {
         let channels =
             vec![vec![ChannelDescription::named("Y", SampleType::F32)]; graph.nodes.len()];
         let valid = vec![window; graph.nodes.len()];
-        let mut composer = Composer::new(&graph, window, &channels, &valid, emit);
+        let mut composer = Composer::new(
+            &graph,
+            &regions(&graph, window, &valid),
+            &channels,
+            &valid,
+            emit,
+        );
         let mut out = Vec::new();
         for y in (top..bottom).step_by(strip) {
             let end = (y + strip as i32).min(bottom);
@@ -321,6 +374,196 @@ mod tests {
         }
     }
 
+    /// Scales a one-channel image by `num / den` in both axes, each output
+    /// pixel the mean of the input pixels whose centres fall in it (or the
+    /// one it falls in, enlarging): a stand-in for any resampling op.
+    struct Rescale {
+        num: i32,
+        den: i32,
+    }
+
+    impl Rescale {
+        /// Input pixels `first..end` that output pixels `out` read.
+        fn source(&self, out: Range<i32>) -> Range<i32> {
+            let (n, d) = (self.num, self.den);
+            let first = (out.start * d).div_euclid(n);
+            let end = (out.end * d + n - 1).div_euclid(n);
+            first..end.max(first + 1)
+        }
+    }
+
+    impl Op for Rescale {
+        fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
+            let x = self.source(out.position.x()..out.end().x());
+            let y = self.source(out.position.y()..out.end().y());
+            Some(IntegerBounds::new(
+                (x.start, y.start),
+                ((x.end - x.start) as usize, (y.end - y.start) as usize),
+            ))
+        }
+        fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+            let scale = |v: i32| v * self.num / self.den;
+            let w = inputs[0];
+            let (x0, y0) = (scale(w.position.x()), scale(w.position.y()));
+            let (x1, y1) = (scale(w.end().x()), scale(w.end().y()));
+            IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+        }
+        fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+            inputs[0].to_vec()
+        }
+        fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
+            let input = inputs[0];
+            let mut row = vec![0.0f32; input.width];
+            let mut values = vec![0.0f32; out.width];
+            for y in out.y..out.end() {
+                values.fill(0.0);
+                let rows = self.source(y..y + 1);
+                for source in rows.clone() {
+                    input.planes[0].read_f32(input.row_range(source), &mut row);
+                    for (i, v) in values.iter_mut().enumerate() {
+                        let x = out.x + i as i32;
+                        for c in self.source(x..x + 1) {
+                            *v += row[(c - input.x) as usize];
+                        }
+                    }
+                }
+                for (i, v) in values.iter_mut().enumerate() {
+                    let x = out.x + i as i32;
+                    *v /= (rows.len() * self.source(x..x + 1).len()) as f32;
+                }
+                let range = out.row_range(y);
+                out.planes[0].write_f32(range, &values);
+            }
+            Ok(())
+        }
+    }
+
+    /// Streams `image` (`width` x `height` from the origin) through `ops`
+    /// (each reading the one before), strip by strip of the output's rows
+    /// as the pipeline does, decode reading each strip's span of the input;
+    /// the output rows and the most input rows held at once.
+    fn stream_regions(
+        image: &[f32],
+        (width, height): (usize, usize),
+        ops: Vec<Box<dyn Op>>,
+        strip: usize,
+    ) -> (Vec<f32>, IntegerBounds, usize) {
+        let mut nodes = vec![Node::Input(0)];
+        for (i, op) in ops.into_iter().enumerate() {
+            nodes.push(Node::Op {
+                op,
+                inputs: vec![i],
+                origin: None,
+            });
+        }
+        let graph = Graph { nodes };
+        let input = IntegerBounds::new((0, 0), (width, height));
+        let valid = graph.evaluate(|_| input, |op, args| op.data_window(args));
+        let output = valid[graph.output()];
+        let regions = Regions::new(&graph, output, &valid).unwrap();
+        assert_eq!(
+            regions.rect(0),
+            input,
+            "the input's region is its data window"
+        );
+        let channels =
+            vec![vec![ChannelDescription::named("Y", SampleType::F32)]; graph.nodes.len()];
+        let mut composer = Composer::new(&graph, &regions, &channels, &valid, 1);
+        let (top, bottom) = (output.position.y(), output.end().y());
+        let (mut fed, mut out, mut most) = (0i32, Vec::new(), 0);
+        for y in (top..bottom).step_by(strip) {
+            let end = (y + strip as i32).min(bottom);
+            let read_to = match end == bottom {
+                true => height as i32,
+                false => regions
+                    .span(&regions.spans(&graph, top..end), 0)
+                    .end
+                    .max(fed),
+            };
+            let mut rows = Rows::zeros(
+                0,
+                fed,
+                width,
+                (read_to - fed) as usize,
+                channels[0].clone(),
+                input,
+            );
+            rows.planes[0] =
+                Samples::F32(image[fed as usize * width..read_to as usize * width].to_vec());
+            fed = read_to;
+            if let Some(done) = composer.push(0, y..end, vec![rows]).unwrap() {
+                let mut v = vec![0.0; done.height * done.width];
+                done.planes[0].read_f32(0..v.len(), &mut v);
+                out.extend(v);
+            }
+            most = most.max(composer.windows[0].height);
+        }
+        (out, output, most)
+    }
+
+    /// The whole-image reference of a `Rescale`.
+    fn rescaled(
+        image: &[f32],
+        (width, height): (usize, usize),
+        op: &Rescale,
+    ) -> (Vec<f32>, (usize, usize)) {
+        let size = |v: usize| (v as i32 * op.num / op.den) as usize;
+        let (w, h) = (size(width), size(height));
+        let mut out = vec![0.0; w * h];
+        for y in 0..h as i32 {
+            for x in 0..w as i32 {
+                let (rows, columns) = (op.source(y..y + 1), op.source(x..x + 1));
+                let count = (rows.len() * columns.len()) as f32;
+                let sum: f32 = rows
+                    .flat_map(|r| {
+                        columns
+                            .clone()
+                            .map(move |c| image[r as usize * width + c as usize])
+                    })
+                    .sum();
+                out[y as usize * w + x as usize] = sum / count;
+            }
+        }
+        (out, (w, h))
+    }
+
+    #[test]
+    fn nodes_of_other_sizes_stream_to_the_whole_image_result() {
+        let (width, height) = (12usize, 240usize);
+        let image: Vec<f32> = (0..width * height).map(|i| ((i * 7) % 23) as f32).collect();
+        for (num, den) in [(1, 2), (1, 4), (2, 1), (3, 2)] {
+            let op = Rescale { num, den };
+            let (expected, _) = rescaled(&image, (width, height), &op);
+            for strip in [1, 3, 16, 1000] {
+                let (got, _, most) = stream_regions(
+                    &image,
+                    (width, height),
+                    vec![Box::new(Rescale { num, den })],
+                    strip,
+                );
+                assert_eq!(got, expected, "scale {num}/{den} strip {strip}");
+                // Flat in height: the input holds about a strip's span.
+                if strip < 100 {
+                    let span = strip * den as usize / num as usize + 2;
+                    assert!(
+                        most <= span + strip,
+                        "scale {num}/{den} strip {strip}: held {most} rows"
+                    );
+                }
+            }
+        }
+        // Down, then up again: two regions behind the output's.
+        let (half, size) = rescaled(&image, (width, height), &Rescale { num: 1, den: 2 });
+        let (expected, _) = rescaled(&half, size, &Rescale { num: 3, den: 1 });
+        let ops: Vec<Box<dyn Op>> = vec![
+            Box::new(Rescale { num: 1, den: 2 }),
+            Box::new(Rescale { num: 3, den: 1 }),
+        ];
+        let (got, output, _) = stream_regions(&image, (width, height), ops, 5);
+        assert_eq!(output.size, exr::math::Vec2(18, 360));
+        assert_eq!(got, expected);
+    }
+
     #[test]
     fn windows_hold_no_more_than_the_halo_needs() {
         let values = column_image(200);
@@ -337,7 +580,13 @@ mod tests {
             ],
         };
         let channels = vec![vec![ChannelDescription::named("Y", SampleType::F32)]; 2];
-        let mut composer = Composer::new(&graph, window, &channels, &[window; 2], 1);
+        let mut composer = Composer::new(
+            &graph,
+            &regions(&graph, window, &[window; 2]),
+            &channels,
+            &[window; 2],
+            1,
+        );
         for y in (top..bottom).step_by(8) {
             let mut rows = Rows::zeros(0, y, 1, 8, channels[0].clone(), window);
             rows.planes[0] =
@@ -373,7 +622,13 @@ mod tests {
         let image: Vec<f32> = (0..width * height).map(|i| (i % 251) as f32).collect();
         let mut input = Rows::zeros(0, 0, width, height, channels[0].clone(), window);
         input.planes[0] = Samples::F32(image.clone());
-        let mut composer = Composer::new(&graph, window, &channels, &[window; 2], 1);
+        let mut composer = Composer::new(
+            &graph,
+            &regions(&graph, window, &[window; 2]),
+            &channels,
+            &[window; 2],
+            1,
+        );
         let done = composer
             .push(0, 0..height as i32, vec![input])
             .unwrap()

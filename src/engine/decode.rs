@@ -80,26 +80,35 @@ impl InputCursor {
     }
 }
 
+/// Columns (x, width) and rows of an input to decode.
+pub type Region = ((i32, usize), Range<i32>);
+
 /// Decodes rows `rows` of every input (see `decode_strip`).
 pub fn decode_all(
     inputs: &mut [InputCursor],
     columns: (i32, usize),
     rows: Range<i32>,
 ) -> Result<Vec<Rows>> {
-    let strips = decode_strip(inputs, columns, rows, |_| true, |_, _| false)?;
+    let regions = vec![(columns, rows); inputs.len()];
+    decode_regions(inputs, &regions)
+}
+
+/// Decodes region `regions[i]` of each input `i` (see `decode_strip`).
+pub fn decode_regions(inputs: &mut [InputCursor], regions: &[Region]) -> Result<Vec<Rows>> {
+    let strips = decode_strip(inputs, regions, |_| true, |_, _| false)?;
     Ok(strips
         .into_iter()
         .map(|s| s.expect("every input selected"))
         .collect())
 }
 
-/// Decodes rows `rows` of the inputs `selected` picks (`None` for the
-/// others) into strips covering `columns` (x, width): zeros where an input
-/// has no data, and for chunks `skip(input, chunk)` names (taken as read).
+/// Decodes region `regions[i]` (columns x, width and rows) of each input
+/// `i` that `selected` picks (`None` for the others) into a strip: zeros
+/// where the input has no data, and for chunks `skip(input, chunk)` names
+/// (taken as read).
 pub fn decode_strip(
     inputs: &mut [InputCursor],
-    columns: (i32, usize),
-    rows: Range<i32>,
+    regions: &[Region],
     selected: impl Fn(usize) -> bool,
     skip: impl Fn(usize, usize) -> bool,
 ) -> Result<Vec<Option<Rows>>> {
@@ -108,9 +117,10 @@ pub fn decode_strip(
         .iter()
         .enumerate()
         .map(|(i, input)| {
-            input.direct(columns, &rows)
+            let (columns, rows) = &regions[i];
+            input.direct(*columns, rows)
                 && !input
-                    .chunks_for(columns, &rows)
+                    .chunks_for(*columns, rows)
                     .into_iter()
                     .any(|k| skip(i, k))
         })
@@ -120,8 +130,9 @@ pub fn decode_strip(
         .enumerate()
         .filter(|(i, _)| selected(*i) && !direct[*i])
         .flat_map(|(i, input)| {
+            let (columns, rows) = &regions[i];
             input
-                .chunks_for(columns, &rows)
+                .chunks_for(*columns, rows)
                 .into_iter()
                 .filter(|&k| !input.carried.iter().any(|(c, _)| *c == k))
                 .map(move |k| (i, k))
@@ -145,10 +156,11 @@ pub fn decode_strip(
     }
     let mut strips = Vec::with_capacity(inputs.len());
     for (i, input) in inputs.iter_mut().enumerate() {
+        let (columns, rows) = &regions[i];
         let strip = match (selected(i), direct[i]) {
             (false, _) => None,
-            (true, true) => Some(input.decode_direct(columns, &rows)?),
-            (true, false) => Some(input.strip(columns, &rows, &mut blocks[i])?),
+            (true, true) => Some(input.decode_direct(*columns, rows)?),
+            (true, false) => Some(input.strip(*columns, rows, &mut blocks[i])?),
         };
         strips.push(strip);
     }
@@ -204,6 +216,7 @@ impl InputCursor {
         let (top, bottom) = (w.position.y(), w.end().y());
         let lines = self.level.block.y() as i32;
         self.deep.is_none()
+            && columns.1 > 0
             && self.carried.is_empty()
             && !subsampling::any(header)
             && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)

@@ -13,6 +13,15 @@ pub trait Op: Send + Sync {
         0
     }
 
+    /// For an op that resamples (resize, transform): the region of its
+    /// inputs it reads to compute region `out` of its own (Nuke's
+    /// `_request`), unclipped. Its inputs then stream in rows and columns of
+    /// their own (`region.rs`). `None`, every other op: it shares its
+    /// inputs' rows and columns, reading `halo` rows above and below.
+    fn request(&self, _out: IntegerBounds) -> Option<IntegerBounds> {
+        None
+    }
+
     /// The output's channels, given each input's channels.
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription>;
 
@@ -20,6 +29,13 @@ pub trait Op: Send + Sync {
     /// the reason when not.
     fn check(&self, _inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         Ok(())
+    }
+
+    /// The output's display window given its inputs' (a resize's: the new
+    /// size), or `None`: the input's whose header the output keeps, as it
+    /// is. An error (a size the op cannot take) ends the frame.
+    fn display_window(&self, _inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+        Ok(None)
     }
 
     /// The output's data window, given each input's.
@@ -53,7 +69,9 @@ pub trait Op: Send + Sync {
     /// Fills `out` (its rows, columns and channels are set; samples are zero)
     /// for frame `frame`. Each input holds at least rows
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data
-    /// window, in the same columns as `out`. An op without inputs is a source.
+    /// window, in the same columns as `out`; for an op that resamples, the
+    /// rows and columns `request` gave, clipped to the input's region. An op
+    /// without inputs is a source.
     /// An error (bad values in an input, say) ends the frame with its message.
     ///
     /// `out` is one band of the rows the engine needs: it runs the bands of a
@@ -157,6 +175,13 @@ impl Graph {
 
     pub fn output(&self) -> usize {
         self.nodes.len() - 1
+    }
+
+    /// The node of input sequence `i`, if the graph reads it.
+    pub fn input_node(&self, i: usize) -> Option<usize> {
+        self.nodes
+            .iter()
+            .position(|n| matches!(n, Node::Input(j) if *j == i))
     }
 
     /// The most that nodes hold at once as compose sweeps them in order,

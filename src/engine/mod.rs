@@ -13,6 +13,7 @@ pub mod pipeline;
 pub mod plan;
 pub mod prepass;
 pub mod provenance;
+pub mod region;
 pub mod sources;
 pub mod stage_time;
 pub mod strip;

@@ -42,6 +42,10 @@ struct PassedBlock {
 impl PassThrough {
     /// Whether `plan`'s output can take chunks from an input, and which.
     pub fn find(graph: &Graph, plan: &FramePlan) -> Option<Self> {
+        // Inputs behind a resize stream in rows of their own.
+        if !plan.regions.shared() {
+            return None;
+        }
         let mut tests = Vec::new();
         let mut node = graph.output();
         let source = loop {
@@ -91,16 +95,11 @@ impl PassThrough {
         rows: Range<i32>,
     ) -> Result<(Vec<Rows>, Vec<IndexedChunk>)> {
         let source = self.source;
-        let mut strips = decode_strip(
-            cursors,
-            columns,
-            rows.clone(),
-            |i| i != source,
-            |_, _| false,
-        )?;
+        let regions = vec![(columns, rows.clone()); cursors.len()];
+        let mut strips = decode_strip(cursors, &regions, |i| i != source, |_, _| false)?;
         let blocks = self.blocks(plan, graph, &strips, rows.clone());
         let passed = |k: usize| blocks.iter().any(|b| b.chunk == k);
-        let mut own = decode_strip(cursors, columns, rows, |i| i == source, |_, k| passed(k))?;
+        let mut own = decode_strip(cursors, &regions, |i| i == source, |_, k| passed(k))?;
         strips[source] = own[source].take();
         let strips = strips
             .into_iter()

@@ -4,7 +4,7 @@
 //! while memory stays bounded by the channel capacities.
 
 use super::compose::Composer;
-use super::decode::{decode_all, InputCursor};
+use super::decode::{decode_regions, InputCursor, Region};
 use super::encode::encode_rows;
 use super::interrupt;
 use super::passthrough::PassThrough;
@@ -186,13 +186,32 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());
     let pass = PassThrough::find(&job.graph, plan);
+    // Per input, its columns and the first row not yet read.
+    let mut fed: Vec<((i32, usize), i32)> = (0..plan.inputs.len())
+        .map(|i| match job.graph.input_node(i) {
+            Some(n) => {
+                let rect = plan.regions.rect(n);
+                ((rect.position.x(), rect.size.width()), rect.position.y())
+            }
+            None => (columns, plan.computed.position.y()),
+        })
+        .collect();
     for rows in plan.strips() {
         if interrupt::requested() {
             return Ok(false);
         }
+        let regions: Vec<Region> = fed
+            .iter_mut()
+            .zip(plan.input_ends(&job.graph, rows.end))
+            .map(|((columns, from), end)| {
+                let read = *from..end.max(*from);
+                *from = read.end;
+                (*columns, read)
+            })
+            .collect();
         let (strips, passed) = match &pass {
             Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone())?,
-            None => (decode_all(&mut cursors, columns, rows.clone())?, Vec::new()),
+            None => (decode_regions(&mut cursors, &regions)?, Vec::new()),
         };
         let decoded = Decoded {
             rows,
@@ -232,7 +251,7 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                 passed.clear();
                 composer = Some(Composer::new(
                     &job.graph,
-                    plan.computed,
+                    &plan.regions,
                     &plan.channels,
                     &plan.windows,
                     lines,

@@ -3,6 +3,7 @@
 
 use super::deep_input::DeepInput;
 use super::graph::{Graph, Node};
+use super::region::Regions;
 use crate::error::{Error, Kind, Result};
 use crate::io::attributes::Edits;
 use crate::io::parts::choose_part;
@@ -168,6 +169,8 @@ pub struct FramePlan {
     /// The rows computed: the whole output window, or for a band the band
     /// and the halo rows around it, on the output's block grid.
     pub computed: IntegerBounds,
+    /// The rows and columns each node streams in (`region.rs`).
+    pub regions: Regions,
     /// The input whose other parts the output keeps, their chunks copied as
     /// they are: the header's input when it has several parts.
     pub carried: Option<usize>,
@@ -216,6 +219,22 @@ impl FramePlan {
 
     pub fn pixels(&self) -> usize {
         self.window().size.area()
+    }
+
+    /// Per input, the end of the rows decode reads of it for a strip ending
+    /// at output row `end`: the strip's rows, but behind a resize (its
+    /// region's span of them), and every row of its region with the last.
+    pub fn input_ends(&self, graph: &Graph, end: i32) -> Vec<i32> {
+        let last = end >= self.computed.end().y();
+        let spans = (!self.regions.shared() && !last)
+            .then(|| self.regions.spans(graph, self.computed.position.y()..end));
+        (0..self.inputs.len())
+            .map(|i| match (graph.input_node(i), &spans) {
+                (Some(n), _) if last => self.regions.rect(n).end().y(),
+                (Some(n), Some(spans)) => self.regions.span(spans, n).end,
+                _ => end,
+            })
+            .collect()
     }
 
     /// The row ranges of the strips, top to bottom.
@@ -338,6 +357,26 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             )));
         }
     }
+    // Display windows first: an op whose geometry follows them (a resize's
+    // scale) learns them before it is asked for data windows and regions.
+    let displays = graph.evaluate(
+        |i| Ok((header_of(i).shared_attributes.display_window, false)),
+        |op, args: &[std::result::Result<(IntegerBounds, bool), String>]| {
+            let args: Vec<(IntegerBounds, bool)> = args
+                .iter()
+                .cloned()
+                .collect::<std::result::Result<_, _>>()?;
+            let windows: Vec<IntegerBounds> = args.iter().map(|a| a.0).collect();
+            Ok(match op.display_window(&windows)? {
+                Some(window) => (window, true),
+                None => (
+                    windows.last().copied().unwrap_or(IntegerBounds::zero()),
+                    args.iter().any(|a| a.1),
+                ),
+            })
+        },
+    );
+    let (display, resized) = displays[graph.output()].clone().map_err(located)?;
     let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
     let windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
     let window = windows[graph.output()];
@@ -359,6 +398,9 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     let mut output_channels = channels[graph.output()].clone();
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
+    if resized {
+        header.shared_attributes.display_window = display;
+    }
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;
@@ -475,31 +517,44 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             false => located(message),
         });
     }
-    // The nodes hold the strip's rows across the whole result's width (those
-    // alive at once, `Graph::peak`); a
-    // flat input's chunks are decoded across its own width (wider than the
-    // result's when it is clipped), whole blocks covering the strip's rows.
-    // (A deep input's chunks are decoded in batches of their own size.)
-    let row_bytes = graph.peak(|n| {
-        channels[n]
-            .iter()
-            .map(|c| c.sample_type.bytes_per_sample())
-            .sum::<usize>()
-            .saturating_mul(computed.size.width())
-    });
-    let decoded: Vec<(usize, usize)> = (0..inputs.len())
+    let regions = Regions::new(graph, computed, &windows).map_err(located)?;
+    if job.rows.is_some() && !regions.shared() {
+        return Err(Error::usage(
+            "--rows renders bands of graphs that keep the image's size only: a resize or \
+             transform streams its input at another rate",
+        ));
+    }
+    // The nodes hold the strip's rows (their region's span of them: the
+    // output's rows, but behind a resize) across their region's width (those
+    // alive at once, `Graph::peak`); a flat input's chunks are decoded across
+    // its own width (wider than the result's when it is clipped), whole
+    // blocks covering the strip's rows. (A deep input's chunks are decoded
+    // in batches of their own size.)
+    let pixel_bytes: Vec<usize> = channels
+        .iter()
+        .map(|list| list.iter().map(|c| c.sample_type.bytes_per_sample()).sum())
+        .collect();
+    let decoded: Vec<(Option<usize>, usize, usize)> = (0..inputs.len())
         .filter(|&i| deep[i].is_none())
         .map(|i| {
             let header = header_of(i);
             let row = header.channels.bytes_per_pixel * input_window(i).size.width();
-            (row, levels[i].block.y())
+            (graph.input_node(i), row, levels[i].block.y())
         })
         .collect();
     let strip_bytes = |rows: usize| {
+        let top = computed.position.y();
+        let spans = regions.spans(graph, top..top.saturating_add(rows as i32));
+        let held = |n: Option<usize>| n.map_or(rows, |n| regions.span(&spans, n).len());
+        let nodes = graph.peak(|n| {
+            pixel_bytes[n]
+                .saturating_mul(regions.rect(n).size.width())
+                .saturating_mul(held(Some(n)))
+        });
         decoded
             .iter()
-            .map(|&(row, lines)| row.saturating_mul(rows + lines))
-            .fold(row_bytes.saturating_mul(rows), usize::saturating_add)
+            .map(|&(node, row, lines)| row.saturating_mul(held(node) + lines))
+            .fold(nodes, usize::saturating_add)
     };
     let smallest = strip_bytes(lines);
     if smallest > MAX_STRIP_BYTES {
@@ -555,6 +610,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         windows,
         strip_rows: blocks * lines,
         computed,
+        regions,
         carried,
         carried_headers,
         every_part: None,

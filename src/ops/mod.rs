@@ -4,6 +4,7 @@
 pub mod blur;
 #[cfg(feature = "colour")]
 pub mod colour;
+pub mod crop;
 pub mod declare;
 pub mod defocus;
 pub mod diffrender;
@@ -13,6 +14,8 @@ pub mod matte;
 pub mod merge;
 pub mod morphology;
 pub mod premult;
+pub mod reformat;
+pub mod resize;
 pub mod shuffle;
 pub mod stereo;
 #[cfg(test)]
@@ -56,6 +59,10 @@ pub const ALL: &[&Operation] = &[
     &colour::cdl::CDL,
     #[cfg(feature = "colour")]
     &colour::filetransform::FILETRANSFORM,
+    &resize::RESIZE,
+    &crop::CROP,
+    &crop::PAD,
+    &reformat::REFORMAT,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

@@ -8,6 +8,7 @@ mod blur;
 #[cfg(feature = "colour")]
 mod colour;
 mod common;
+mod crop;
 mod damaged_corpus;
 mod deep;
 mod depth_and_motion;
@@ -27,6 +28,7 @@ mod overnight;
 mod passthrough;
 mod peers;
 mod real_files;
+mod resize;
 mod sequences_and_errors;
 mod shuffle;
 mod stack;

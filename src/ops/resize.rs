@@ -1,0 +1,504 @@
+//! `resize`: a new display window size, filtered as oiiotool's
+//! `--resize:filter=NAME` (OpenImageIO's `ImageBufAlgo::resize`), in two
+//! resampling passes: across the rows (into f32), then down the columns,
+//! each streaming its input in a region of its own (`Op::request`), so the
+//! vertical pass holds a few rows of the horizontal one, never the image.
+//! Formulas: specs/ops.md, "resize".
+
+use super::declare::{choice, input, params, Args, Operation, Value};
+use crate::engine::graph::{GraphBuilder, NodeId, Op};
+use crate::engine::strip::{Rows, RowsMut, Samples};
+use crate::params::RESIZE_SCALE;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
+use std::ops::Range;
+use std::sync::OnceLock;
+
+pub const RESIZE: Operation = Operation {
+    name: "resize",
+    about: "Resize to a new display window size, `--size WxH` or `--scale F`, filtered as \
+            oiiotool's `--resize:filter=NAME` (every channel; edges clamp to the data window)",
+    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
+    repeats: false,
+    params: Params::PARAMS,
+    layers: false,
+    straight: false,
+    header: Some(0),
+    build,
+    measure: None,
+};
+
+params! {
+    pub struct Params {
+        /// The new display window's size, WxH.
+        size: Option<Size>,
+        /// Or a factor for both sides (0.5: half size), sides rounded.
+        scale: Option<f32> [RESIZE_SCALE],
+        /// box, triangle, gaussian, mitchell or lanczos3.
+        filter: Filter = "lanczos3",
+    }
+}
+
+fn build(args: &Args, graph: &mut GraphBuilder, inputs: &[NodeId]) -> Result<NodeId, String> {
+    let p = Params::read(args)?;
+    let target = match (p.size, p.scale) {
+        (Some(size), None) => Target::Size(size),
+        (None, Some(scale)) => Target::Scale(scale),
+        _ => return Err(format!("{} takes one of size (WxH) and scale", args.op)),
+    };
+    Ok(passes(target, p.filter, inputs[0], graph))
+}
+
+/// The two passes resizing graph node `input`; returns the second.
+pub fn passes(target: Target, filter: Filter, input: NodeId, graph: &mut GraphBuilder) -> NodeId {
+    let across = graph.add(Pass::new(Axis::X, target, filter), &[input]);
+    // The original is read for its channels' types only.
+    graph.add(Pass::new(Axis::Y, target, filter), &[across, input])
+}
+
+/// A size `WxH`, each side 1 to 1,048,576 pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    pub width: usize,
+    pub height: usize,
+}
+
+impl Value for Size {
+    fn parse(text: &str) -> Result<Self, String> {
+        let side = |s: &str| {
+            s.trim()
+                .parse::<usize>()
+                .ok()
+                .filter(|v| (1..=1 << 20).contains(v))
+        };
+        match text.split_once(['x', 'X']).map(|(w, h)| (side(w), side(h))) {
+            Some((Some(width), Some(height))) => Ok(Size { width, height }),
+            _ => Err(format!(
+                "size '{text}': expected WxH, 1 to 1048576 pixels each (1920x1080)"
+            )),
+        }
+    }
+}
+
+/// The new size: given, the old one scaled, or fitted to a format.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Target {
+    Size(Size),
+    Scale(f32),
+    Fit(Size, Fit),
+}
+
+/// How an image is fitted to a format (Nuke's Reformat resize types).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fit {
+    /// Scaled to the format's width, aspect kept.
+    Width,
+    /// To its height.
+    Height,
+    /// Inside it, whole (letterboxed).
+    Inside,
+    /// Covering it (cropped to it by the display window).
+    Fill,
+    /// To both sides, aspect changed.
+    Distort,
+}
+
+impl Value for Fit {
+    fn parse(text: &str) -> Result<Self, String> {
+        use Fit::*;
+        choice(
+            text,
+            Self::CHOICES,
+            &[Width, Height, Inside, Fill, Distort],
+            "fit",
+        )
+    }
+    const CHOICES: &'static [&'static str] = &["width", "height", "fit", "fill", "distort"];
+}
+
+impl Target {
+    /// The new length along `axis` of an image whose display window is `old`.
+    fn length(self, axis: Axis, old: IntegerBounds) -> usize {
+        let (w, h) = (old.size.width() as f64, old.size.height() as f64);
+        let side = match axis {
+            Axis::X => w,
+            Axis::Y => h,
+        };
+        let scale = match self {
+            Target::Size(s) => return [s.width, s.height][(axis == Axis::Y) as usize],
+            Target::Scale(f) => f as f64,
+            Target::Fit(format, fit) => {
+                let (sx, sy) = (format.width as f64 / w, format.height as f64 / h);
+                match fit {
+                    Fit::Width => sx,
+                    Fit::Height => sy,
+                    Fit::Inside => sx.min(sy),
+                    Fit::Fill => sx.max(sy),
+                    Fit::Distort => [sx, sy][(axis == Axis::Y) as usize],
+                }
+            }
+        };
+        ((side * scale).round() as usize).max(1)
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    Box,
+    Triangle,
+    Gaussian,
+    Mitchell,
+    Lanczos3,
+}
+
+impl Value for Filter {
+    fn parse(text: &str) -> Result<Self, String> {
+        use Filter::*;
+        choice(
+            text,
+            Self::CHOICES,
+            &[Box, Triangle, Gaussian, Mitchell, Lanczos3],
+            "filter",
+        )
+    }
+    const CHOICES: &'static [&'static str] =
+        &["box", "triangle", "gaussian", "mitchell", "lanczos3"];
+}
+
+impl Filter {
+    /// OpenImageIO's default width, in pixels of the smaller image.
+    fn width(self) -> f32 {
+        match self {
+            Filter::Box => 1.0,
+            Filter::Triangle => 2.0,
+            Filter::Gaussian => 3.0,
+            Filter::Mitchell => 4.0,
+            Filter::Lanczos3 => 6.0,
+        }
+    }
+
+    /// The filter stretched to `width`, at `x` (OpenImageIO's 1-D forms).
+    fn at(self, x: f32, width: f32) -> f32 {
+        let x = x.abs();
+        let unit = x * 2.0 / width;
+        match self {
+            Filter::Box => (x <= width * 0.5) as u8 as f32,
+            Filter::Triangle => (1.0 - unit).max(0.0),
+            Filter::Gaussian if unit < 1.0 => (-2.0 * unit * unit).exp(),
+            Filter::Gaussian => 0.0,
+            Filter::Mitchell => mitchell(unit),
+            Filter::Lanczos3 => lanczos3(x * 6.0 / width),
+        }
+    }
+}
+
+/// Mitchell–Netravali, B = C = 1/3, over -1..1 (its -2..2 halved).
+fn mitchell(x: f32) -> f32 {
+    if x > 1.0 {
+        return 0.0;
+    }
+    let x = 2.0 * x;
+    let (b, c) = (1.0 / 3.0, 1.0 / 3.0);
+    let (x2, x3) = (x * x, x * x * x);
+    let v = match x >= 1.0 {
+        true => {
+            (-b - 6.0 * c) * x3
+                + (6.0 * b + 30.0 * c) * x2
+                + (-12.0 * b - 48.0 * c) * x
+                + (8.0 * b + 24.0 * c)
+        }
+        false => {
+            (12.0 - 9.0 * b - 6.0 * c) * x3 + (-18.0 + 12.0 * b + 6.0 * c) * x2 + (6.0 - 2.0 * b)
+        }
+    };
+    v / 6.0
+}
+
+/// 3 sin(πx) sin(πx/3) / (πx)², 0 beyond 3.
+fn lanczos3(x: f32) -> f32 {
+    if x > 3.0 {
+        return 0.0;
+    }
+    if x < 1e-4 {
+        return 1.0;
+    }
+    let pi = std::f32::consts::PI;
+    3.0 * (pi * x).sin() * (pi * x / 3.0).sin() / (pi * pi * x * x)
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Axis {
+    X,
+    Y,
+}
+
+impl Axis {
+    fn range(self, w: IntegerBounds) -> Range<i32> {
+        match self {
+            Axis::X => w.position.x()..w.end().x(),
+            Axis::Y => w.position.y()..w.end().y(),
+        }
+    }
+
+    /// `w` with its range along this axis replaced by `range`.
+    fn with(self, w: IntegerBounds, range: Range<i32>) -> IntegerBounds {
+        let len = (range.end - range.start).max(0) as usize;
+        match self {
+            Axis::X => IntegerBounds::new((range.start, w.position.y()), (len, w.size.height())),
+            Axis::Y => IntegerBounds::new((w.position.x(), range.start), (w.size.width(), len)),
+        }
+    }
+}
+
+/// A resize along one axis: the display windows' ranges it maps, from the
+/// first frame (a sequence must keep its size).
+#[derive(Clone, Debug, PartialEq)]
+struct Geometry {
+    from: Range<i32>,
+    to: Range<i32>,
+    /// The new length over the old.
+    ratio: f32,
+    /// The filter's width and radius in source pixels, as OpenImageIO has
+    /// them: wider by the ratio when enlarging.
+    width: f32,
+    radius: i32,
+}
+
+impl Geometry {
+    fn new(from: Range<i32>, length: usize, filter: Filter) -> Self {
+        let to = from.start..from.start + length as i32;
+        let ratio = length as f32 / (from.end - from.start) as f32;
+        let width = filter.width() * ratio.max(1.0);
+        let radius = (width / 2.0 / ratio).ceil() as i32;
+        Geometry {
+            from,
+            to,
+            ratio,
+            width,
+            radius,
+        }
+    }
+
+    /// The first source pixel of output pixel `x`, and its 2R + 1 weights
+    /// (normalised), as OpenImageIO computes them in f32.
+    fn taps(&self, filter: Filter, x: i32, weights: &mut Vec<f32>) -> i32 {
+        let (f0, flen) = (
+            self.from.start as f32,
+            (self.from.end - self.from.start) as f32,
+        );
+        let (t0, tlen) = (self.to.start as f32, (self.to.end - self.to.start) as f32);
+        let s = f0 + (x as f32 - t0 + 0.5) * (1.0 / tlen) * flen;
+        let floor = s.floor();
+        let frac = s - floor;
+        weights.clear();
+        let r = self.radius;
+        weights.extend(
+            (0..2 * r + 1)
+                .map(|i| filter.at(self.ratio * ((i - r) as f32 - (frac - 0.5)), self.width)),
+        );
+        let total: f32 = weights.iter().sum();
+        if total != 0.0 {
+            weights.iter_mut().for_each(|w| *w /= total);
+        }
+        floor as i32 - r
+    }
+
+    /// The source pixels output pixels `out` read (unclipped).
+    fn source(&self, filter: Filter, out: Range<i32>) -> Range<i32> {
+        if out.is_empty() {
+            return out;
+        }
+        let mut weights = Vec::new();
+        let first = self.taps(filter, out.start, &mut weights);
+        let last = self.taps(filter, out.end - 1, &mut weights);
+        first..last + weights.len() as i32
+    }
+
+    /// The pixels that data `data` covers once resized.
+    fn data(&self, data: Range<i32>) -> Range<i32> {
+        if data.is_empty() {
+            return 0..0;
+        }
+        let scale = (self.to.end - self.to.start) as f64 / (self.from.end - self.from.start) as f64;
+        let map = |v: i32| self.to.start as f64 + (v - self.from.start) as f64 * scale;
+        map(data.start).floor() as i32..map(data.end).ceil() as i32
+    }
+}
+
+/// One pass: along `axis`, every channel, as f32 (X) or the original
+/// input's types (Y, whose second input is the original).
+pub struct Pass {
+    axis: Axis,
+    target: Target,
+    filter: Filter,
+    geometry: OnceLock<Geometry>,
+}
+
+impl Pass {
+    fn new(axis: Axis, target: Target, filter: Filter) -> Self {
+        Pass {
+            axis,
+            target,
+            filter,
+            geometry: OnceLock::new(),
+        }
+    }
+
+    fn geometry(&self) -> &Geometry {
+        self.geometry.get().expect("the display window comes first")
+    }
+}
+
+impl Op for Pass {
+    fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+        // The length from the original's display window (the vertical
+        // pass's second input: the first's is already resized across).
+        let display = inputs[0];
+        let from = self.axis.range(display);
+        let length = self.target.length(self.axis, inputs[inputs.len() - 1]);
+        let new = Geometry::new(from, length, self.filter);
+        let first = self.geometry.get_or_init(|| new.clone());
+        if *first != new {
+            return Err(format!(
+                "resize: the display window changed size within the sequence ({} pixels along \
+                 {:?}, the first frame's {}): resize one size at a time",
+                new.from.len(),
+                self.axis,
+                first.from.len()
+            ));
+        }
+        Ok(Some(self.axis.with(display, first.to.clone())))
+    }
+
+    fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
+        if inputs[0].size.area() == 0 {
+            return IntegerBounds::zero();
+        }
+        let range = self.geometry().data(self.axis.range(inputs[0]));
+        self.axis.with(inputs[0], range)
+    }
+
+    fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
+        let Some(geometry) = self.geometry.get() else {
+            // Asked before any frame (whether it resamples): it does.
+            return Some(out);
+        };
+        let source = geometry.source(self.filter, self.axis.range(out));
+        Some(self.axis.with(out, source))
+    }
+
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        let sample_type = |c: &ChannelDescription| match self.axis {
+            Axis::X => SampleType::F32,
+            Axis::Y => c.sample_type,
+        };
+        inputs[inputs.len() - 1]
+            .iter()
+            .map(|c| ChannelDescription {
+                sample_type: sample_type(c),
+                ..c.clone()
+            })
+            .collect()
+    }
+
+    fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
+        match self.axis {
+            Axis::X => self.across(inputs[0], out),
+            Axis::Y => self.down(inputs[0], out),
+        }
+        Ok(())
+    }
+}
+
+impl Pass {
+    /// Each row filtered across: output column x from its taps in the row,
+    /// clamped to the input's data window.
+    fn across(&self, input: &Rows, out: &mut RowsMut) {
+        let (columns, data) = (out.valid_columns(), input.valid_columns());
+        if columns.is_empty() || data.is_empty() {
+            return;
+        }
+        let geometry = self.geometry();
+        // Per output column: the offsets in the input row of its taps.
+        let mut weights = Vec::new();
+        let mut taps: Vec<(Vec<usize>, Vec<f32>)> = Vec::with_capacity(columns.len());
+        let (lo, hi) = (data.start as i32, data.end as i32 - 1);
+        for c in columns.clone() {
+            let first = geometry.taps(self.filter, out.x + c as i32, &mut weights);
+            let at = (0..weights.len() as i32)
+                .map(|i| (first + i - input.x).clamp(lo, hi) as usize)
+                .collect();
+            taps.push((at, weights.clone()));
+        }
+        let mut row = vec![0.0f32; input.width];
+        let mut values = vec![0.0f32; columns.len()];
+        for y in out.valid_rows() {
+            let range = out.row_range(y);
+            for (c, plane) in out.planes.iter_mut().enumerate() {
+                input.planes[c].read_f32(input.row_range(y), &mut row);
+                for (v, (at, w)) in values.iter_mut().zip(&taps) {
+                    *v = at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum();
+                }
+                plane.write_f32(
+                    range.start + columns.start..range.start + columns.end,
+                    &values,
+                );
+            }
+        }
+    }
+
+    /// Each output row from its taps among the first pass's rows, clamped
+    /// to the data window.
+    fn down(&self, across: &Rows, out: &mut RowsMut) {
+        let (rows, columns) = (across.valid_rows(), out.valid_columns());
+        if rows.is_empty() || columns.is_empty() {
+            return;
+        }
+        let geometry = self.geometry();
+        let mut weights = Vec::new();
+        let mut sums = vec![0.0f32; columns.len()];
+        for y in out.valid_rows() {
+            let first = geometry.taps(self.filter, y, &mut weights);
+            let range = out.row_range(y);
+            for (c, plane) in out.planes.iter_mut().enumerate() {
+                let Samples::F32(source) = &across.planes[c] else {
+                    unreachable!("the first pass writes f32")
+                };
+                sums.fill(0.0);
+                for (i, &w) in weights.iter().enumerate() {
+                    let from = (first + i as i32).clamp(rows.start, rows.end - 1);
+                    let line = across.row_range(from).start;
+                    let line = &source[line + columns.start..line + columns.end];
+                    for (sum, v) in sums.iter_mut().zip(line) {
+                        *sum += w * v;
+                    }
+                }
+                plane.write_f32(
+                    range.start + columns.start..range.start + columns.end,
+                    &sums,
+                );
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_and_bad_ones_say_what_is_expected() {
+        assert_eq!(
+            Size::parse("1920x1080"),
+            Ok(Size {
+                width: 1920,
+                height: 1080
+            })
+        );
+        for bad in ["1920", "0x10", "ax2", "10x"] {
+            assert!(
+                Size::parse(bad).unwrap_err().contains("expected WxH"),
+                "{bad}"
+            );
+        }
+    }
+}

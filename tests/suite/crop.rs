@@ -1,0 +1,159 @@
+//! `crop` (oiiotool's `--crop` and `--cut`) and `pad`: windows as oiiotool
+//! sets them, every pixel the input's bit for bit or black (a whole-image
+//! reference), and the job nodes.
+
+use crate::common::*;
+use exr::meta::attribute::LineOrder;
+use std::path::Path;
+
+fn ours(input: &Path, output: &Path, command: &str, args: &[&str]) -> Img {
+    let mut all = vec![command, s(input), "-o", s(output), "--quiet"];
+    all.extend(args);
+    let out = run(&all);
+    assert!(out.status.success(), "{}", stderr(&out));
+    read_image(output)
+}
+
+/// `img`'s pixels moved by (dx, dy) into the window `(x, y, w, h)`: the
+/// input's sample bits where it has data, else zero.
+fn reference(
+    img: &Img,
+    (x, y, w, h): (i32, i32, usize, usize),
+    (dx, dy): (i32, i32),
+    display: (usize, usize),
+) -> Img {
+    let mut out = Img {
+        x,
+        y,
+        width: w,
+        height: h,
+        display,
+        channels: Default::default(),
+    };
+    for (name, samples) in &img.channels {
+        let mut plane = samples.zeros_like(w * h);
+        for row in 0..h {
+            for column in 0..w {
+                let (sx, sy) = (x + column as i32 + dx, y + row as i32 + dy);
+                if let Some(i) = img.index(sx, sy) {
+                    plane.copy_from(row * w + column, samples, i);
+                }
+            }
+        }
+        out.channels.insert(name.clone(), plane);
+    }
+    out
+}
+
+fn input(dir: &Path) -> (std::path::PathBuf, Img) {
+    let path = dir.join("in.exr");
+    let img = random_rgba(11, 3, 2, 50, 40, Kind::Half, true);
+    write_image(&path, &img, compression("zip"), LineOrder::Increasing);
+    let img = read_image(&path);
+    (path, img)
+}
+
+#[test]
+fn crop_cut_and_pad_keep_every_pixel_bit_for_bit() {
+    let dir = tempfile::tempdir().unwrap();
+    let (path, img) = input(dir.path());
+    let display = img.display;
+    let out = dir.path().join("out.exr");
+    // Inside, across the edge (padding with black), and with --display.
+    let got = ours(&path, &out, "crop", &["--region", "20x10+5+7"]);
+    assert_identical(&got, &reference(&img, (5, 7, 20, 10), (0, 0), display));
+    let got = ours(
+        &path,
+        &out,
+        "crop",
+        &["--region", "-4,30,59,49", "--strip-rows", "3"],
+    );
+    assert_identical(&got, &reference(&img, (-4, 30, 64, 20), (0, 0), display));
+    let got = ours(&path, &out, "crop", &["--region", "20x10+5+7", "--display"]);
+    let mut expected = reference(&img, (5, 7, 20, 10), (0, 0), (25, 17));
+    expected.display = got.display;
+    assert_identical(&got, &expected);
+    // A cut: the region at the origin, data and display window both.
+    let got = ours(
+        &path,
+        &out,
+        "crop",
+        &["--region", "30x20+40+30", "--cut", "--strip-rows", "1"],
+    );
+    assert_identical(&got, &reference(&img, (0, 0, 30, 20), (40, 30), (30, 20)));
+    // Pad: 8 on each side; then left, top, right, bottom.
+    let got = ours(&path, &out, "pad", &["--by", "8"]);
+    assert_identical(&got, &reference(&img, (-5, -6, 66, 56), (0, 0), display));
+    let got = ours(&path, &out, "pad", &["--by", "1,2,3,4", "--display"]);
+    let mut expected = reference(&img, (2, 0, 54, 46), (0, 0), display);
+    expected.display = got.display;
+    assert_identical(&got, &expected);
+}
+
+#[test]
+fn crop_and_cut_set_the_windows_oiiotool_sets() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (path, _) = input(dir.path());
+    for (geometry, ours_args, theirs) in [
+        ("20x10+5+7", vec![], "--crop"),
+        ("80x60-8-6", vec![], "--crop"),
+        ("20x10+5+7", vec!["--cut"], "--cut"),
+    ] {
+        let (a, b) = (dir.path().join("ours.exr"), dir.path().join("theirs.exr"));
+        let mut args = vec!["--region", geometry];
+        args.extend(ours_args);
+        ours(&path, &a, "crop", &args);
+        let status = std::process::Command::new(&oiiotool)
+            .args([s(&path), theirs, geometry, "-o", s(&b)])
+            .status()
+            .unwrap();
+        assert!(status.success());
+        let windows = |p: &Path| {
+            let h = &exr::meta::MetaData::read_from_file(p, false)
+                .unwrap()
+                .headers[0];
+            (h.data_window(), h.shared_attributes.display_window)
+        };
+        assert_eq!(windows(&a), windows(&b), "{theirs} {geometry}");
+        if let Some(idiff) = peer("idiff") {
+            assert_idiff_identical(&idiff, &a, &b);
+        }
+    }
+}
+
+#[test]
+fn crop_and_pad_job_nodes_and_bad_regions() {
+    let dir = tempfile::tempdir().unwrap();
+    let (path, _) = input(dir.path());
+    let (a, b) = (dir.path().join("a.exr"), dir.path().join("b.exr"));
+    let got = ours(&path, &a, "crop", &["--region", "30x20+40+30", "--cut"]);
+    let job = dir.path().join("job.toml");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"cut\"\nop = \"crop\"\nregion = \"30x20+40+30\"\ncut = true\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"cut\"]\n",
+            s(&path),
+            s(&b)
+        ),
+    )
+    .unwrap();
+    let ran = run(&["run", s(&job), "--quiet"]);
+    assert!(ran.status.success(), "{}", stderr(&ran));
+    assert_identical(&read_image(&b), &got);
+    for (command, args) in [
+        ("crop", ["--region", "0x5+0+0"]),
+        ("crop", ["--region", "5,5,4,9"]),
+        ("pad", ["--by", "-2"]),
+    ] {
+        let out = dir.path().join("bad.exr");
+        let mut all = vec![command, s(&path), "-o", s(&out)];
+        all.extend(args);
+        let result = run(&all);
+        assert!(!result.status.success(), "{args:?} accepted");
+        assert!(stderr(&result).contains("expected"), "{}", stderr(&result));
+        assert!(!out.exists());
+    }
+}
