@@ -559,6 +559,8 @@ value_enum!(crate::generate::PlateKind {
     Object => "object": "Differential rendering's object alone: a shaded ball above the middle of a transparent frame; RGBA and Z",
     Proxy => "proxy": "The proxy scene without the object: an opaque grey ground; RGBA, Z",
     Shadowed => "shadowed": "The object over the proxy with the ball's soft shadow on the ground",
+    Set => "set": "The demo's background for depth of field: a checker receding from Z 3 (bottom) to 60 (top), with highlights; RGBA and Z",
+    Ball => "ball": "The demo's foreground for motion blur: a striped ball circling fast; premultiplied RGBA, Z, forward.u, forward.v",
 });
 
 value_enum!(crate::generate::PixelType {

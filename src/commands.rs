@@ -8,11 +8,10 @@ use crate::engine::luminance_chroma;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{FramePlan, FrameSources, HeaderBase, Job, Source};
-use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
-use crate::generate::{PixelType, Plate, PlateKind};
+use crate::generate::Plate;
 use crate::io::attributes::Edits;
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::parts::{choose_part, split_part};
@@ -21,7 +20,6 @@ use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, Frame
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
-use crate::ops::{defocus, diffrender, merge, vblur};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{Report, Summary};
 use exr::prelude::Compression;
@@ -145,7 +143,7 @@ pub fn run(command: Command) -> Result<()> {
             width,
             height,
             run,
-        } => demo(&dir, length, width, height, &run),
+        } => crate::demo::demo(&dir, length, width, height, &run),
         Command::Generate {
             output,
             kind,
@@ -208,7 +206,7 @@ fn operation(call: Invocation) -> Result<()> {
 }
 
 /// Operation `op` with parameters `values` (as typed) on `inputs`.
-fn add(
+pub(crate) fn add(
     graph: &mut GraphBuilder,
     op: &'static Operation,
     values: &[(&'static str, &str)],
@@ -230,7 +228,7 @@ fn working_folder() -> Result<PathBuf> {
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
 /// comes from input `header_from`.
-fn input_job(
+pub(crate) fn input_job(
     texts: &[String],
     output: &str,
     graph: Graph,
@@ -361,7 +359,7 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     Ok(())
 }
 
-fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
+pub(crate) fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
     if run.all_parts {
         return Err(Error::usage(
             "--all-parts needs an input: generate reads none",
@@ -450,7 +448,7 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code).
-fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
+pub(crate) fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
     let (reads, writes) = job.files();
     refuse_overwriting(reads, writes)?;
     if run.dry_run {
@@ -555,7 +553,7 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
     text
 }
 
-fn run_with_progress(
+pub(crate) fn run_with_progress(
     job: &Job,
     label: &str,
     run: &RunArgs,
@@ -649,136 +647,8 @@ fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
     }
 }
 
-/// Writes a synthetic foreground and background sequence into `dir`, then
-/// composites them and reports the speed of the composite.
-fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
-    let first = 1001;
-    let frames: Vec<i64> = (first..first + length as i64).collect();
-    let pattern = |name: &str| {
-        dir.join(format!("{name}.####.exr"))
-            .to_string_lossy()
-            .into_owned()
-    };
-    // The plates show a progress bar but no summary: the composite's is the point.
-    let plates = RunArgs {
-        quiet: run.quiet || run.json,
-        json: false,
-        ..run.clone()
-    };
-    let kinds = [
-        ("fg", PlateKind::Fg),
-        ("bg", PlateKind::Bg),
-        ("object", PlateKind::Object),
-        ("proxy", PlateKind::Proxy),
-        ("shadowed", PlateKind::Shadowed),
-    ];
-    for (name, kind) in kinds {
-        let plate = Plate {
-            kind,
-            width,
-            height,
-            origin: (0, 0),
-            pixel_type: PixelType::Half,
-        };
-        let job = plate_job(
-            plate,
-            FramePattern::output(&pattern(name))?,
-            frames.clone(),
-            &plates,
-        )?;
-        let (report, _) = run_with_progress(
-            &job,
-            &format!("writing {name}"),
-            &plates,
-            Summary::default(),
-        )?;
-        report.clear();
-        if !plates.quiet {
-            let extra = if kind == PlateKind::Fg {
-                "Z, forward.u/v"
-            } else {
-                "Z"
-            };
-            eprintln!(
-                "wrote {} ({length} frames, {width}x{height} half RGBA + {extra})",
-                pattern(name)
-            );
-        }
-    }
-    let run = RunArgs {
-        frames: Some(format!("{first}-{}", first + length as i64 - 1)),
-        ..run.clone()
-    };
-    let inputs = [pattern("fg"), pattern("bg")];
-    // Differential rendering: the ball and its shadow, rendered on a proxy
-    // ground, put into the bg plate.
-    let shot = [
-        pattern("object"),
-        pattern("proxy"),
-        pattern("shadowed"),
-        pattern("bg"),
-    ];
-    let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
-    add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
-    let (job, summary) = input_job(
-        &shot,
-        &pattern("diffrender"),
-        graph.finish(),
-        3,
-        &LayerArgs::default(),
-        &RunArgs {
-            quiet: plates.quiet,
-            ..run.clone()
-        },
-    )?;
-    if !plates.quiet {
-        eprintln!(
-            "differential rendering into {}: object over the plate with the shadow it casts on the proxy",
-            pattern("diffrender")
-        );
-    }
-    run_job(&job, "diffrender", &plates, summary)?;
-    if !plates.quiet {
-        eprintln!(
-            "one pass into {}: fg motion-blurred by its forward.u/v, over bg defocused by its Z",
-            pattern("comp")
-        );
-    }
-    // The streaks' reach measured over the fg frames first.
-    let layers = LayerArgs::default();
-    let (fg, _) = input_job(
-        &inputs[..1],
-        &pattern("comp"),
-        Graph::identity(),
-        0,
-        &layers,
-        &run,
-    )?;
-    let reach = max_over_rows(&fg, 0, ["forward.u", "forward.v"], |u, v| {
-        vblur::rows_reached(1.0, u, v)
-    })?;
-    let (mut graph, nodes) = GraphBuilder::with_inputs(inputs.len());
-    let reach = reach.to_string();
-    let moving = add(
-        &mut graph,
-        &vblur::VBLUR,
-        &[("max_displacement", &reach)],
-        &nodes[..1],
-    )?;
-    let defocus = [
-        ("focus", "5"),
-        ("scale", "4"),
-        ("max_radius", "4"),
-        ("aperture", "hexagon"),
-    ];
-    let defocused = add(&mut graph, &defocus::DEFOCUS, &defocus, &nodes[1..])?;
-    add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
-    let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &run)?;
-    run_job(&job, "demo", &run, summary)
-}
-
 /// `n things` or `1 thing`.
-fn count(n: usize, thing: &str) -> String {
+pub(crate) fn count(n: usize, thing: &str) -> String {
     match n {
         1 => format!("1 {thing}"),
         n => format!("{n} {thing}s"),
