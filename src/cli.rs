@@ -322,7 +322,12 @@ pub struct RunArgs {
     pub tile: Option<exr::math::Vec2<usize>>,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
-    #[arg(help_heading = "Frames and sequences", long, value_enum, default_value = "error")]
+    #[arg(
+        help_heading = "Frames and sequences",
+        long,
+        value_enum,
+        default_value = "error"
+    )]
     pub missing: crate::engine::sources::MissingPolicy,
     /// Set an attribute of the output's header: NAME=VALUE, typed as oiiotool
     /// types it (an integer is an int, another number a float, else a
@@ -620,10 +625,20 @@ fn not_applicable(name: &str) -> Vec<(&'static str, &'static str)> {
     let own_shot = "it makes its own shot (--length sets its frames)";
     let several = "it reads several inputs (--all-parts is for operations of one)";
     match name {
-        "generate" => ["missing", "keep_going", "all_parts"].map(|id| (id, reads_none)).to_vec(),
-        "demo" => ["frames", "missing", "keep_going", "all_parts", "rows", "resume", "dry_run"]
-            .map(|id| (id, own_shot))
+        "generate" => ["missing", "keep_going", "all_parts"]
+            .map(|id| (id, reads_none))
             .to_vec(),
+        "demo" => [
+            "frames",
+            "missing",
+            "keep_going",
+            "all_parts",
+            "rows",
+            "resume",
+            "dry_run",
+        ]
+        .map(|id| (id, own_shot))
+        .to_vec(),
         "deepmerge" => vec![("all_parts", several)],
         _ => match crate::ops::find(name) {
             Some(op) if op.inputs.len() > 1 || op.repeats => vec![("all_parts", several)],
@@ -642,7 +657,10 @@ fn compression_default(name: &str) -> Option<String> {
         _ => {
             let op = crate::ops::find(name)?;
             let input = &op.inputs[op.header.unwrap_or(op.inputs.len() - 1)];
-            format!("the {} input's, whose header the output keeps", input.name.to_uppercase())
+            format!(
+                "the {} input's, whose header the output keeps",
+                input.name.to_uppercase()
+            )
         }
     })
 }
@@ -655,7 +673,9 @@ pub fn refuse_not_applicable(matches: &ArgMatches) -> Result<(), clap::Error> {
     for (id, why) in not_applicable(name) {
         if sub.value_source(id) == Some(clap::parser::ValueSource::CommandLine) {
             let mut command = command();
-            let command = command.find_subcommand_mut(name).expect("parsed, so declared");
+            let command = command
+                .find_subcommand_mut(name)
+                .expect("parsed, so declared");
             return Err(command.error(
                 clap::error::ErrorKind::ArgumentConflict,
                 format!("--{} does not apply to `{name}`: {why}", option_name(id)),

@@ -21,7 +21,7 @@ use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
 use crate::params::DEFAULT_DWA_LEVEL;
-use crate::report::{Report, Summary};
+use crate::report::{count, Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -291,6 +291,8 @@ pub(crate) fn input_job(
         attributes,
     };
     let summary = Summary {
+        warnings: crate::engine::assumptions::warnings(&job, texts),
+        named: frames.len(),
         skipped: resolved.skipped,
         replaced: resolved.replaced,
         ..Summary::default()
@@ -359,7 +361,12 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     Ok(())
 }
 
-pub(crate) fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
+pub(crate) fn plate_job(
+    plate: Plate,
+    output: FramePattern,
+    frames: Vec<i64>,
+    run: &RunArgs,
+) -> Result<Job> {
     if run.all_parts {
         return Err(Error::usage(
             "--all-parts needs an input: generate reads none",
@@ -451,6 +458,11 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 pub(crate) fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<()> {
     let (reads, writes) = job.files();
     refuse_overwriting(reads, writes)?;
+    if !run.quiet {
+        for warning in &summary.warnings {
+            eprintln!("exrcomp: warning: {warning}");
+        }
+    }
     if run.dry_run {
         if !run.quiet {
             print!("{}", dry_run_listing(job, run.json));
@@ -476,8 +488,8 @@ pub(crate) fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -
         return Err(Error::new(
             Kind::Input,
             format!(
-                "{} frames failed: {}",
-                frames.len(),
+                "{} failed: {}",
+                count(frames.len(), "frame"),
                 format_frame_list(&frames)
             ),
         ));
@@ -644,13 +656,5 @@ fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
                 files.len()
             ),
         )),
-    }
-}
-
-/// `n things` or `1 thing`.
-pub(crate) fn count(n: usize, thing: &str) -> String {
-    match n {
-        1 => format!("1 {thing}"),
-        n => format!("{n} {thing}s"),
     }
 }

@@ -59,7 +59,12 @@ pub fn write(
     }
     for (r, (label, files)) in rows.iter().enumerate() {
         let y = top + r * (height + MARGIN);
-        draw_text(&mut sheet, label, (MARGIN, y + (height - line.min(height)) / 2), label_width);
+        draw_text(
+            &mut sheet,
+            label,
+            (MARGIN, y + (height - line.min(height)) / 2),
+            label_width,
+        );
         for (c, file) in files.iter().enumerate() {
             let panel = shrink(file, (width, height))?;
             let x = left + c * (width + MARGIN);
@@ -122,10 +127,7 @@ fn shrink(file: &Path, (width, height): (usize, usize)) -> Result<Vec<[u8; 3]>> 
     // Every panel pixel covers the same number of display pixels, give or
     // take one row or column.
     let area = (dw * dh) as f64 / (width * height) as f64;
-    Ok(sums
-        .iter()
-        .map(|s| s.map(|v| srgb(v / area)))
-        .collect())
+    Ok(sums.iter().map(|s| s.map(|v| srgb(v / area))).collect())
 }
 
 /// A linear value as an 8-bit sRGB code, clipped to 0..1.

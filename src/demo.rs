@@ -3,14 +3,14 @@
 //! (specs/demo.md).
 
 use crate::cli::{LayerArgs, RunArgs};
-use crate::commands::{add, count, input_job, plate_job, run_job, run_with_progress};
+use crate::commands::{add, input_job, plate_job, run_job, run_with_progress};
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::engine::prepass::max_over_rows;
 use crate::error::{Error, Result};
 use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::FramePattern;
 use crate::ops::{defocus, diffrender, merge, vblur};
-use crate::report::Summary;
+use crate::report::{count, Summary};
 use std::path::Path;
 
 /// The defocus's focus depth: the `Set`'s row at 47% of its height (its
@@ -107,7 +107,14 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
             "ball" => effects.blur(&mut graph, nodes[0])?,
             _ => effects.defocus(&mut graph, nodes[0])?,
         };
-        let (job, summary) = input_job(&[pattern(input)], &pattern(output), graph.finish(), 0, &layers, &alone)?;
+        let (job, summary) = input_job(
+            &[pattern(input)],
+            &pattern(output),
+            graph.finish(),
+            0,
+            &layers,
+            &alone,
+        )?;
         run_job(&job, output, &alone, summary)?;
     }
 
@@ -121,7 +128,14 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     ];
     let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
     add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
-    let (job, summary) = input_job(&shot, &pattern("diffrender"), graph.finish(), 3, &layers, &all)?;
+    let (job, summary) = input_job(
+        &shot,
+        &pattern("diffrender"),
+        graph.finish(),
+        3,
+        &layers,
+        &all,
+    )?;
     talk(format!(
         "differential rendering into {}: object over the plate with the shadow it casts on the proxy",
         pattern("diffrender")
@@ -209,12 +223,16 @@ impl Effects {
 
     fn blur(&self, graph: &mut GraphBuilder, input: NodeId) -> Result<NodeId> {
         let shutter = SHUTTER.to_string();
-        let values = [("scale", shutter.as_str()), ("max_displacement", &self.reach)];
+        let values = [
+            ("scale", shutter.as_str()),
+            ("max_displacement", &self.reach),
+        ];
         add(graph, &vblur::VBLUR, &values, &[input])
     }
 
     fn defocus(&self, graph: &mut GraphBuilder, input: NodeId) -> Result<NodeId> {
-        let values: Vec<(&str, &str)> = self.defocus.iter().map(|(k, v)| (*k, v.as_str())).collect();
+        let values: Vec<(&str, &str)> =
+            self.defocus.iter().map(|(k, v)| (*k, v.as_str())).collect();
         add(graph, &defocus::DEFOCUS, &values, &[input])
     }
 }

@@ -90,7 +90,11 @@ impl Plate {
         // A highlight at the middle of every third cell of every other row.
         let centre = |k: i32| (k as f32 + 0.5) * cell as f32;
         let spot = (fx - centre(i)).hypot(fy - centre(j)) < (h / 200.0).max(1.0);
-        let light = if spot && i.rem_euclid(3) == 1 && j.rem_euclid(2) == 1 { 8.0 } else { 0.0 };
+        let light = if spot && i.rem_euclid(3) == 1 && j.rem_euclid(2) == 1 {
+            8.0
+        } else {
+            0.0
+        };
         let noise = |c| grain(x, y, frame, c) * 0.02;
         [
             1.0,
@@ -117,7 +121,11 @@ impl Plate {
         }
         // Diagonal stripes, so that a streak shows along the motion.
         let stripe = (((fx - cx + fy - cy) / (radius * 0.4)).floor() as i32).rem_euclid(2) == 0;
-        let [r, g, bl] = if stripe { [0.9, 0.12, 0.04] } else { [1.0, 0.8, 0.15] };
+        let [r, g, bl] = if stripe {
+            [0.9, 0.12, 0.04]
+        } else {
+            [1.0, 0.8, 0.15]
+        };
         let (u, v) = (-a * BALL_SPEED * t.sin(), b * BALL_SPEED * t.cos());
         [alpha, alpha * bl, alpha * g, alpha * r, 5.0, u, v]
     }

@@ -1,4 +1,3 @@
-
 fn main() {
     keep_freed_memory();
     let mut cli = exrcomp::cli::parse();
