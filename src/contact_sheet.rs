@@ -124,10 +124,23 @@ fn shrink(file: &Path, (width, height): (usize, usize)) -> Result<Vec<[u8; 3]>> 
             }
         }
     }
-    // Every panel pixel covers the same number of display pixels, give or
-    // take one row or column.
-    let area = (dw * dh) as f64 / (width * height) as f64;
-    Ok(sums.iter().map(|s| s.map(|v| srgb(v / area))).collect())
+    // How many display columns and rows fall in each panel column and row
+    // (they differ by one where the scale is not a whole number); pixels
+    // outside the data window count as black.
+    let covered = |from: usize, to: usize| {
+        let mut counts = vec![0.0f64; to];
+        (0..from).for_each(|at| counts[bin(at as i64, from, to)] += 1.0);
+        counts
+    };
+    let (columns, rows) = (covered(dw, width), covered(dh, height));
+    Ok(sums
+        .iter()
+        .enumerate()
+        .map(|(at, s)| {
+            let n = (columns[at % width] * rows[at / width]).max(1.0);
+            s.map(|v| srgb(v / n))
+        })
+        .collect())
 }
 
 /// A linear value as an 8-bit sRGB code, clipped to 0..1.
