@@ -110,7 +110,12 @@ fn edge_width(
     cell: f64,
 ) -> f64 {
     let row: Vec<f64> = (0..pw)
-        .map(|x| pixels[(py + y) * w + px + x].iter().map(|&v| v as f64).sum())
+        .map(|x| {
+            pixels[(py + y) * w + px + x]
+                .iter()
+                .map(|&v| v as f64)
+                .sum()
+        })
         .collect();
     let mut sorted = row.clone();
     sorted.sort_by(f64::total_cmp);
@@ -204,6 +209,243 @@ fn the_demo_draws_a_contact_sheet_where_blur_grows_with_distance_from_focus() {
     };
     for row in 0..3 {
         let (ball, blurred) = (covered(found[row * 6]), covered(found[row * 6 + 2]));
-        assert!(blurred as f64 > 1.15 * ball as f64, "frame row {row}: {blurred} vs {ball}");
+        assert!(
+            blurred as f64 > 1.15 * ball as f64,
+            "frame row {row}: {blurred} vs {ball}"
+        );
+    }
+}
+
+/// The subcommands `exrcomp --help` lists.
+fn commands() -> Vec<String> {
+    let out = run(&["--help"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    text.lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next().map(str::to_string))
+        .filter(|c| !["help", "farm"].contains(&c.as_str()))
+        .collect()
+}
+
+#[test]
+fn help_lists_own_options_first_then_the_shared_ones_grouped() {
+    let order = [
+        "Arguments:",
+        "Options:",
+        "Layers, views and parts:",
+        "Frames and sequences:",
+        "Output:",
+        "Run control:",
+    ];
+    for command in commands() {
+        let out = run(&[command.as_str(), "-h"]);
+        let help = String::from_utf8_lossy(&out.stdout).to_string();
+        let at: Vec<usize> = order
+            .iter()
+            .filter_map(|h| help.find(&format!("\n{h}\n")))
+            .collect();
+        assert!(
+            at.windows(2).all(|w| w[0] < w[1]),
+            "{command}: headings out of order:\n{help}"
+        );
+        // Every positional and -o is described, on its line or the next.
+        let lines: Vec<&str> = help.lines().collect();
+        for (n, line) in lines.iter().enumerate() {
+            if !(line.starts_with("  <") || line.contains("-o, --output")) {
+                continue;
+            }
+            let name_end = line.find('>').unwrap() + 1;
+            let next = lines.get(n + 1).copied().unwrap_or_default();
+            assert!(
+                !line[name_end..].trim().is_empty()
+                    || (next.starts_with("          ") && !next.trim().is_empty()),
+                "{command}: undescribed: {line}"
+            );
+        }
+        if help.contains("--compression") {
+            assert!(
+                help.contains("(default: "),
+                "{command}: --compression's default:\n{help}"
+            );
+        }
+    }
+    let help =
+        |command: &str| String::from_utf8_lossy(&run(&[command, "--help"]).stdout).to_string();
+    assert!(!help("generate").contains("--missing") && !help("generate").contains("--keep-going"));
+    assert!(!help("demo").contains("--frames") && !help("demo").contains("--dry-run"));
+    assert!(!help("over").contains("--all-parts") && help("blur").contains("--all-parts"));
+    assert!(help("generate").contains("dwaa, dwab (default: zip)"));
+    assert!(help("over").contains("(default: the BG input's, whose header the output keeps)"));
+    assert!(help("transcode").contains("(default: the input's)"));
+    // Own options before the shared ones.
+    let over = help("defocus");
+    assert!(over.find("--focus").unwrap() < over.find("--frames").unwrap());
+    // Not offered means refused too, with the reason.
+    let out = run(&["generate", "x.exr", "--missing", "skip"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("--missing does not apply to `generate`: it reads no input"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn one_frame_reads_in_the_singular_and_a_short_run_ends_with_its_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = |n: &str| d.join(format!("{n}.####.exr"));
+    generate(&p("fg"), "fg", (32, 16), &["--frames", "1-3"]);
+    generate(&p("bg"), "bg", (32, 16), &["--frames", "1-3"]);
+    let one = ok(&[
+        "over",
+        s(&d.join("fg.0001.exr")),
+        s(&d.join("bg.0001.exr")),
+        "-o",
+        s(&d.join("o.exr")),
+    ]);
+    assert!(
+        one.lines().last().unwrap().starts_with("1 frame in "),
+        "{one}"
+    );
+    assert!(one.contains(" frames/s, "), "{one}");
+    let dry = ok(&[
+        "over",
+        s(&p("fg")),
+        s(&p("bg")),
+        "-o",
+        s(&p("o")),
+        "--frames",
+        "2",
+        "--dry-run",
+    ]);
+    assert!(dry.contains("would write 1 frame to"), "{dry}");
+    std::fs::remove_file(d.join("bg.0002.exr")).unwrap();
+    let held = ok(&[
+        "over",
+        s(&p("fg")),
+        s(&p("bg")),
+        "-o",
+        s(&p("h")),
+        "--missing",
+        "hold",
+    ]);
+    assert!(
+        held.contains("bg.####.exr: frame 2 held from the nearest earlier frame"),
+        "{held}"
+    );
+    let skipped = ok(&[
+        "over",
+        s(&p("fg")),
+        s(&p("bg")),
+        "-o",
+        s(&p("k")),
+        "--frames",
+        "1-3",
+        "--missing",
+        "skip",
+    ]);
+    let last = skipped.lines().last().unwrap();
+    assert!(last.starts_with("2 frames in "), "{last}");
+    assert!(
+        last.ends_with("; 1 of the 3 frames named left out for missing input (--missing skip): 2"),
+        "{last}"
+    );
+}
+
+#[test]
+fn warnings_say_what_was_assumed_once_a_run_and_quiet_silences_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = |n: &str| d.join(format!("{n}.####.exr"));
+    generate(&p("fg"), "fg", (64, 48), &["--frames", "1-3"]);
+    generate(&p("bg"), "bg", (96, 48), &["--frames", "1-3"]);
+    generate(&p("plate"), "bg", (64, 48), &["--frames", "1-3"]);
+    ok(&[
+        "shuffle",
+        s(&p("fg")),
+        "-o",
+        s(&p("rgb")),
+        "--ch",
+        "R,G,B",
+        "-q",
+    ]);
+    let message = ok(&["over", s(&p("rgb")), s(&p("bg")), "-o", s(&p("o"))]);
+    let display = format!(
+        "exrcomp: warning: {}'s display window (0 0) - (63 47) is not {}'s (0 0) - (95 47): the output keeps {}'s",
+        s(&p("rgb")), s(&p("bg")), s(&p("bg"))
+    );
+    assert_eq!(message.matches(&display).count(), 1, "{message}");
+    let alpha = format!(
+        "exrcomp: warning: {} has no alpha channel (A): it is taken as opaque (alpha 1 inside its data window), hiding {} there",
+        s(&p("rgb")), s(&p("bg"))
+    );
+    assert_eq!(message.matches(&alpha).count(), 1, "{message}");
+    assert!(message.contains("merge --op plus"), "{message}");
+    // A foreground with alpha of the plate's size: no warning.
+    let clean = ok(&["over", s(&p("fg")), s(&p("plate")), "-o", s(&p("c"))]);
+    assert!(!clean.contains("warning"), "{clean}");
+    let matte = ok(&[
+        "diffmatte",
+        s(&p("fg")),
+        "--clean-plate",
+        s(&p("bg")),
+        "-o",
+        s(&p("m")),
+    ]);
+    assert!(matte.contains(&format!(
+        "exrcomp: warning: the clean plate {} (96x48 at 0, 0) is not the size and place of the footage {} (64x48 at 0, 0)",
+        s(&p("bg")), s(&p("fg"))
+    )), "{matte}");
+    let quiet = run(&["over", s(&p("rgb")), s(&p("bg")), "-o", s(&p("q")), "-q"]);
+    assert!(
+        quiet.status.success() && stderr(&quiet).is_empty(),
+        "{}",
+        stderr(&quiet)
+    );
+}
+
+#[test]
+fn the_readme_s_two_commands_make_the_examples_runnable() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let block: Vec<&str> = readme
+        .lines()
+        .skip_while(|l| !l.starts_with("<!-- examples:"))
+        .skip(2)
+        .take_while(|l| !l.starts_with("```"))
+        .collect();
+    assert_eq!(block.len(), 2, "{block:?}");
+    let dir = tempfile::tempdir().unwrap();
+    let examples = dir.path().join("specs/examples");
+    std::fs::create_dir_all(&examples).unwrap();
+    for name in ["over.toml", "chain.toml"] {
+        let from = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("specs/examples")
+            .join(name);
+        std::fs::copy(from, examples.join(name)).unwrap();
+    }
+    let bin = Path::new(env!("CARGO_BIN_EXE_exrcomp")).parent().unwrap();
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    for line in block {
+        let out = Command::new("sh")
+            .args(["-ec", line])
+            .current_dir(dir.path())
+            .env("PATH", &path)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{line}: {}", stderr(&out));
+    }
+    for frame in 1..=4 {
+        assert!(
+            examples.join(format!("comp.{frame:04}.exr")).is_file(),
+            "frame {frame}"
+        );
     }
 }

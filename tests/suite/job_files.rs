@@ -168,6 +168,25 @@ fn errors_name_the_job_file_line() {
 }
 
 #[test]
+fn a_near_miss_gets_one_suggestion_not_the_list() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = "[[node]]\nname = \"m\"\nop = \"blur\"\nradios = 3\ninputs = [\"a\"]\n";
+    let (_, message) = run_job(
+        dir.path(),
+        &format!(
+            "{READS}\n{job}\n[[node]]\nname = \"o\"\nwrite = \"o.####.exr\"\ninputs = [\"m\"]\n"
+        ),
+    );
+    assert!(
+        message.contains("unknown field `radios` for node 'm': did you mean `radius`?"),
+        "{message}"
+    );
+    assert!(!message.contains("it takes"), "{message}");
+    let (_, message) = run_job(dir.path(), &format!("{READS}\n[[node]]\nname = \"m\"\nop = \"blur\"\nsmoothness = 3\nradius = 1\ninputs = [\"a\"]\n"));
+    assert!(message.contains("(it takes: "), "{message}");
+}
+
+#[test]
 fn neighbourhood_ops_chain_with_merges_in_one_pass() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
