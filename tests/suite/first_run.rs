@@ -192,6 +192,7 @@ fn the_demo_draws_a_contact_sheet_where_blur_grows_with_distance_from_focus() {
     };
     let sharp = edge_width(&pixels, w, defocus, middle_of(focus_row), cell);
     let far = edge_width(&pixels, w, defocus, middle_of(ph / 10), cell);
+    eprintln!("set defocus panel: edges {far} px wide far from focus, {sharp} px at it");
     assert!(
         far >= 2.0 * sharp,
         "edge widths: {far} px far from focus, {sharp} px at it"
