@@ -108,12 +108,6 @@ pub fn run(command: Command) -> Result<()> {
         } => {
             let graph = Graph::identity();
             let layers = LayerArgs::default();
-            if run.all_parts {
-                return Err(Error::usage(
-                    "--all-parts runs an operation of one input on every part of it; deepmerge \
-                     reads several",
-                ));
-            }
             let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
             job.merged[0] = inputs[1..]
                 .iter()
@@ -367,11 +361,6 @@ pub(crate) fn plate_job(
     frames: Vec<i64>,
     run: &RunArgs,
 ) -> Result<Job> {
-    if run.all_parts {
-        return Err(Error::usage(
-            "--all-parts needs an input: generate reads none",
-        ));
-    }
     let display = plate.display_window();
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
