@@ -11,7 +11,8 @@ use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
 
 /// The warnings for `job`, whose inputs were given as `texts`. None when a
-/// first frame cannot be read (the run reports that) or is made black.
+/// first frame cannot be read or decoded (the run reports that) or is made
+/// black.
 pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
     let Some(first) = job.frames.first() else {
         return Vec::new();
@@ -23,6 +24,8 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
             };
             let file = ExrFile::open(&job.inputs[i].path(frame), None).ok()?;
             let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
+            // A part the run cannot decode is its error alone.
+            file.check_codec(part).ok()?;
             Some(file.header(part).clone())
         })
         .collect();
