@@ -32,7 +32,7 @@ macro_rules! value_enum {
 )]
 pub struct Cli {
     /// Worker threads (default: one per core).
-    #[arg(long, global = true, value_parser = crate::params::parse_threads)]
+    #[arg(long, global = true, help_heading = "Run control", value_parser = crate::params::parse_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -46,8 +46,10 @@ pub enum Command {
     /// Flatten a deep file: each pixel's samples composited front to back
     /// (any command reading a deep scanline input flattens it the same way).
     Flatten {
+        /// Deep input file or sequence.
         #[arg(value_hint = ValueHint::FilePath)]
         input: String,
+        /// Output file or sequence.
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
@@ -58,6 +60,7 @@ pub enum Command {
         /// Two or more deep files or sequences; the first one's header is kept.
         #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         inputs: Vec<String>,
+        /// Output file or sequence.
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         #[command(flatten)]
@@ -71,14 +74,17 @@ pub enum Command {
     /// Join band files written with --rows into one file, copying their
     /// compressed chunks (nothing is decoded or re-encoded).
     Stitch {
+        /// The band files, each written with --rows, in any order.
         #[arg(value_hint = ValueHint::FilePath, required = true, num_args = 2..)]
         bands: Vec<PathBuf>,
+        /// The whole file written.
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: PathBuf,
     },
     /// Run a job file: a graph of reads, operations and a write, streamed in
     /// one pass (specs/job-format.md).
     Run {
+        /// The job file (TOML; its file names are relative to its folder).
         #[arg(value_hint = ValueHint::FilePath)]
         job: PathBuf,
         /// Write here instead of the job's write node's file.
@@ -89,8 +95,10 @@ pub enum Command {
     },
     /// Read and write a sequence unchanged but for compression (the codec floor).
     Transcode {
+        /// Input file or sequence.
         #[arg(value_hint = ValueHint::FilePath)]
         input: String,
+        /// Output file or sequence.
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
         /// Level of a mipmapped input (N), or a ripmapped one (X,Y), to
@@ -102,6 +110,7 @@ pub enum Command {
     },
     /// Describe EXR files as exrheader does and check that every chunk decodes.
     Info {
+        /// EXR files to describe (not sequences: name each frame).
         #[arg(value_hint = ValueHint::FilePath, required = true)]
         files: Vec<PathBuf>,
         /// One JSON object per file, on a line of its own, with the same facts.
@@ -113,11 +122,13 @@ pub enum Command {
         /// Where the shot is written.
         #[arg(long, default_value = "demo-shot")]
         dir: PathBuf,
-        /// Number of frames.
-        #[arg(long, default_value_t = 24)]
+        /// Number of frames (1001 on).
+        #[arg(long, default_value_t = 24, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=100_000))]
         length: usize,
+        /// Plate width in pixels.
         #[arg(long, default_value_t = 1920)]
         width: usize,
+        /// Plate height in pixels.
         #[arg(long, default_value_t = 1080)]
         height: usize,
         #[command(flatten)]
@@ -132,10 +143,13 @@ pub enum Command {
         /// Output file or sequence.
         #[arg(value_hint = ValueHint::FilePath)]
         output: String,
+        /// What the plate shows.
         #[arg(long, value_enum, default_value = "bg")]
         kind: crate::generate::PlateKind,
+        /// Width in pixels.
         #[arg(long, default_value_t = 1920)]
         width: usize,
+        /// Height in pixels.
         #[arg(long, default_value_t = 1080)]
         height: usize,
         /// Data window origin, as X,Y (display window stays at 0,0).
@@ -275,6 +289,7 @@ pub struct FarmJob {
 
 /// Which layers, views and parts an operation works on.
 #[derive(Args, Clone, Default)]
+#[command(next_help_heading = "Layers, views and parts")]
 pub struct LayerArgs {
     /// Layer to work on (`diffuse` for diffuse.R, G, B, A); repeatable.
     /// Default: the unnamed layer (R, G, B, A).
@@ -300,79 +315,85 @@ pub struct LayerArgs {
 #[derive(Args, Clone)]
 pub struct RunArgs {
     /// Frames: A-B, A-B:STEP, or a comma list (default: those on disk).
-    #[arg(long)]
+    #[arg(help_heading = "Frames and sequences", long)]
     pub frames: Option<String>,
     /// Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
-    /// (default: the background's).
-    #[arg(long)]
+    /// (default: the input's whose header the output keeps; each command's
+    /// help says which, `compression_default`).
+    #[arg(help_heading = "Output", long)]
     pub compression: Option<String>,
     /// libdeflate's effort for ZIP and ZIPS output, 1 (fastest) to 12
     /// (smallest); noisy low-byte halves always take ISA-L's fastest level.
     /// The default 2 writes files within 2.5% of OpenEXR's size.
-    #[arg(long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
+    #[arg(help_heading = "Output", long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
     /// DWAA and DWAB output's compression level, written as the file's
     /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as
     /// OpenEXR's).
-    #[arg(long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
+    #[arg(help_heading = "Output", long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
     pub dwa_level: Option<f32>,
     /// Write tiled files with tiles of WxH pixels (N: NxN), one level
     /// (default: tiles as the background's if it is tiled, else scanlines).
-    #[arg(long, value_parser = parse_tile)]
+    #[arg(help_heading = "Output", long, value_parser = parse_tile)]
     pub tile: Option<exr::math::Vec2<usize>>,
     /// Write scanline files even when the background is tiled.
-    #[arg(long, conflicts_with = "tile")]
+    #[arg(help_heading = "Output", long, conflicts_with = "tile")]
     pub scanline: bool,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
-    #[arg(long, value_enum, default_value = "error")]
+    #[arg(
+        help_heading = "Frames and sequences",
+        long,
+        value_enum,
+        default_value = "error"
+    )]
     pub missing: crate::engine::sources::MissingPolicy,
     /// Set an attribute of the output's header: NAME=VALUE, typed as oiiotool
     /// types it (an integer is an int, another number a float, else a
     /// string) or as :TYPE says (string, int, float, double, v2i, v2f, v3i,
     /// v3f, box2i, box2f, m33f, m44f, rational, timecode, keycode; values
     /// of several numbers separated by commas). Repeatable.
-    #[arg(long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
+    #[arg(help_heading = "Output", long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
     pub attribs: Vec<crate::io::attributes::Attrib>,
     /// Erase the output header's attributes of this name, or matching this
     /// glob (`*`, `?`), before --attrib sets any. Repeatable.
-    #[arg(long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
+    #[arg(help_heading = "Output", long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
     pub erase_attribs: Vec<String>,
     /// Write each frame's timeCode: HH:MM:SS:FF (HH:MM:SS;FF drop-frame) for
     /// the shot's first frame, or @FRAME's (01:00:00:00@1001), counted at
     /// the frame rate; or +N / -N to shift the input's own by N frames.
-    #[arg(long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
+    #[arg(help_heading = "Output", long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
     pub timecode: Option<crate::io::timecode::TimecodeSpec>,
     /// Frame rate, written as framesPerSecond: N, N/D (24000/1001) or an
     /// NTSC rate as 23.976 (default: the input's).
-    #[arg(long, value_name = "RATE", value_parser = crate::io::attributes::parse_rational)]
+    #[arg(help_heading = "Output", long, value_name = "RATE", value_parser = crate::io::attributes::parse_rational)]
     pub fps: Option<exr::meta::attribute::Rational>,
     /// Skip frames whose output already exists and decodes completely.
-    #[arg(long)]
+    #[arg(help_heading = "Run control", long)]
     pub resume: bool,
     /// Report a frame with bad input and go on with the others (the exit
     /// code is still non-zero).
-    #[arg(long)]
+    #[arg(help_heading = "Run control", long)]
     pub keep_going: bool,
     /// No progress bar and no summary.
-    #[arg(long, short)]
+    #[arg(help_heading = "Run control", long, short)]
     pub quiet: bool,
     /// Print a JSON summary on standard output at the end.
-    #[arg(long)]
+    #[arg(help_heading = "Run control", long)]
     pub json: bool,
     /// Check every frame's inputs and the outputs, print the files each
     /// output frame reads and writes (with --json as JSON), decode nothing
     /// and write nothing.
-    #[arg(long)]
+    #[arg(help_heading = "Run control", long)]
     pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
-    #[arg(long, value_parser = parse_rows)]
+    #[arg(help_heading = "Frames and sequences", long, value_parser = parse_rows)]
     pub rows: Option<(i32, i32)>,
     /// Run the operation on every part of a multi-part input instead of one,
     /// each part keeping its own channels, windows and attributes; for
     /// operations of one input (specs/file-format.md, "Parts").
-    #[arg(long, conflicts_with = "rows")]
+    #[arg(help_heading = "Frames and sequences", long, conflicts_with = "rows")]
     pub all_parts: bool,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
@@ -590,9 +611,115 @@ value_enum!(crate::generate::PlateKind {
     Object => "object": "Differential rendering's object alone: a shaded ball above the middle of a transparent frame; RGBA and Z",
     Proxy => "proxy": "The proxy scene without the object: an opaque grey ground; RGBA, Z",
     Shadowed => "shadowed": "The object over the proxy with the ball's soft shadow on the ground",
+    Set => "set": "The demo's background for depth of field: a checker receding from Z 3 (bottom) to 60 (top), with highlights; RGBA and Z",
+    Ball => "ball": "The demo's foreground for motion blur: a striped ball circling fast; premultiplied RGBA, Z, forward.u, forward.v",
 });
 
 value_enum!(crate::generate::PixelType {
     Half => "half": "16-bit half floats",
     Float => "float": "32-bit floats",
 });
+
+/// The command line: the declared commands, each offering the shared
+/// options that apply to it (`NOT_APPLICABLE`) and saying what its output's
+/// compression is by default.
+pub fn command() -> clap::Command {
+    use clap::CommandFactory;
+    let mut command = Cli::command();
+    let names: Vec<String> = command
+        .get_subcommands()
+        .map(|c| c.get_name().to_string())
+        .collect();
+    for name in names {
+        command = command.mut_subcommand(&name, |mut sub| {
+            for (id, _) in not_applicable(&name) {
+                sub = sub.mut_arg(id, |arg| arg.hide(true));
+            }
+            match compression_default(&name) {
+                Some(default) => sub.mut_arg("compression", |arg| {
+                    arg.help(format!(
+                        "Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, \
+                         dwab (default: {default})"
+                    ))
+                }),
+                None => sub,
+            }
+        });
+    }
+    command
+}
+
+/// The shared options that do not apply to command `name`, and why: they
+/// are not offered (hidden, and refused by `refuse_not_applicable`).
+fn not_applicable(name: &str) -> Vec<(&'static str, &'static str)> {
+    let reads_none = "it reads no input";
+    let own_shot = "it makes its own shot (--length sets its frames)";
+    let several = "it reads several inputs (--all-parts is for operations of one)";
+    match name {
+        "generate" => ["missing", "keep_going", "all_parts"]
+            .map(|id| (id, reads_none))
+            .to_vec(),
+        "demo" => [
+            "frames",
+            "missing",
+            "keep_going",
+            "all_parts",
+            "rows",
+            "resume",
+            "dry_run",
+        ]
+        .map(|id| (id, own_shot))
+        .to_vec(),
+        "deepmerge" => vec![("all_parts", several)],
+        _ => match crate::ops::find(name) {
+            Some(op) if op.inputs.len() > 1 || op.repeats => vec![("all_parts", several)],
+            _ => Vec::new(),
+        },
+    }
+}
+
+/// What command `name` writes when `--compression` is not given.
+fn compression_default(name: &str) -> Option<String> {
+    Some(match name {
+        "generate" | "demo" => "zip".to_string(),
+        "transcode" | "flatten" => "the input's".to_string(),
+        "deepmerge" => "the first input's".to_string(),
+        "run" => "the job's write node's `compression`, else its header input's".to_string(),
+        _ => {
+            let op = crate::ops::find(name)?;
+            let input = &op.inputs[op.header.unwrap_or(op.inputs.len() - 1)];
+            format!(
+                "the {} input's, whose header the output keeps",
+                input.name.to_uppercase()
+            )
+        }
+    })
+}
+
+/// A usage error for a shared option given to a command it does not apply to.
+pub fn refuse_not_applicable(matches: &ArgMatches) -> Result<(), clap::Error> {
+    let Some((name, sub)) = matches.subcommand() else {
+        return Ok(());
+    };
+    for (id, why) in not_applicable(name) {
+        if sub.value_source(id) == Some(clap::parser::ValueSource::CommandLine) {
+            let mut command = command();
+            let command = command
+                .find_subcommand_mut(name)
+                .expect("parsed, so declared");
+            return Err(command.error(
+                clap::error::ErrorKind::ArgumentConflict,
+                format!("--{} does not apply to `{name}`: {why}", option_name(id)),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The command line parsed, or the process ended with clap's message.
+pub fn parse() -> Cli {
+    let matches = command().get_matches();
+    refuse_not_applicable(&matches)
+        .and_then(|()| Cli::from_arg_matches(&matches))
+        .unwrap_or_else(|e| e.exit())
+}

@@ -9,11 +9,10 @@ use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Source};
-use crate::engine::prepass::max_over_rows;
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
-use crate::generate::{PixelType, Plate, PlateKind};
+use crate::generate::Plate;
 use crate::io::attributes::Edits;
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::parts::{choose_part, split_part};
@@ -22,9 +21,8 @@ use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, Frame
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
-use crate::ops::{defocus, diffrender, merge, vblur};
 use crate::params::DEFAULT_DWA_LEVEL;
-use crate::report::{Report, Summary};
+use crate::report::{count, Report, Summary};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -96,12 +94,6 @@ pub fn execute(command: Command) -> Result<Option<u64>> {
         } => {
             let graph = Graph::identity();
             let layers = LayerArgs::default();
-            if run.all_parts {
-                return Err(Error::usage(
-                    "--all-parts runs an operation of one input on every part of it; deepmerge \
-                     reads several",
-                ));
-            }
             let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
             job.merged[0] = inputs[1..]
                 .iter()
@@ -131,7 +123,7 @@ pub fn execute(command: Command) -> Result<Option<u64>> {
             width,
             height,
             run,
-        } => demo(&dir, length, width, height, &run).map(|()| None),
+        } => crate::demo::demo(&dir, length, width, height, &run).map(|()| None),
         Command::Generate {
             output,
             kind,
@@ -194,7 +186,7 @@ fn operation(call: Invocation) -> Result<Option<u64>> {
 }
 
 /// Operation `op` with parameters `values` (as typed) on `inputs`.
-fn add(
+pub(crate) fn add(
     graph: &mut GraphBuilder,
     op: &'static Operation,
     values: &[(&'static str, &str)],
@@ -216,7 +208,7 @@ pub fn working_folder() -> Result<PathBuf> {
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
 /// comes from input `header_from`.
-fn input_job(
+pub(crate) fn input_job(
     texts: &[String],
     output: &str,
     graph: Graph,
@@ -279,6 +271,8 @@ fn input_job(
         attributes,
     };
     let summary = Summary {
+        warnings: crate::engine::assumptions::warnings(&job, texts),
+        named: frames.len(),
         skipped: resolved.skipped,
         replaced: resolved.replaced,
         ..Summary::default()
@@ -347,12 +341,12 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     Ok(())
 }
 
-fn plate_job(plate: Plate, output: FramePattern, frames: Vec<i64>, run: &RunArgs) -> Result<Job> {
-    if run.all_parts {
-        return Err(Error::usage(
-            "--all-parts needs an input: generate reads none",
-        ));
-    }
+pub(crate) fn plate_job(
+    plate: Plate,
+    output: FramePattern,
+    frames: Vec<i64>,
+    run: &RunArgs,
+) -> Result<Job> {
     let display = plate.display_window();
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
@@ -437,9 +431,19 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code). A dry run plans every
 /// frame and gives the most bytes one of them holds at once.
-fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Option<u64>> {
+pub(crate) fn run_job(
+    job: &Job,
+    label: &str,
+    run: &RunArgs,
+    summary: Summary,
+) -> Result<Option<u64>> {
     let (reads, writes) = job.files();
     refuse_overwriting(reads, writes)?;
+    if !run.quiet {
+        for warning in &summary.warnings {
+            eprintln!("exrcomp: warning: {warning}");
+        }
+    }
     if run.dry_run {
         let mut bound = 0;
         for sources in &job.frames {
@@ -472,8 +476,8 @@ fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Op
         return Err(Error::new(
             Kind::Input,
             format!(
-                "{} frames failed: {}",
-                frames.len(),
+                "{} failed: {}",
+                count(frames.len(), "frame"),
                 format_frame_list(&frames)
             ),
         ));
@@ -549,7 +553,7 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
     text
 }
 
-fn run_with_progress(
+pub(crate) fn run_with_progress(
     job: &Job,
     label: &str,
     run: &RunArgs,
@@ -640,141 +644,5 @@ fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
                 files.len()
             ),
         )),
-    }
-}
-
-/// Writes a synthetic foreground and background sequence into `dir`, then
-/// composites them and reports the speed of the composite.
-fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
-    let first = 1001;
-    let frames: Vec<i64> = (first..first + length as i64).collect();
-    let pattern = |name: &str| {
-        dir.join(format!("{name}.####.exr"))
-            .to_string_lossy()
-            .into_owned()
-    };
-    // The plates show a progress bar but no summary: the composite's is the point.
-    let plates = RunArgs {
-        quiet: run.quiet || run.json,
-        json: false,
-        ..run.clone()
-    };
-    let kinds = [
-        ("fg", PlateKind::Fg),
-        ("bg", PlateKind::Bg),
-        ("object", PlateKind::Object),
-        ("proxy", PlateKind::Proxy),
-        ("shadowed", PlateKind::Shadowed),
-    ];
-    for (name, kind) in kinds {
-        let plate = Plate {
-            kind,
-            width,
-            height,
-            origin: (0, 0),
-            pixel_type: PixelType::Half,
-        };
-        let job = plate_job(
-            plate,
-            FramePattern::output(&pattern(name))?,
-            frames.clone(),
-            &plates,
-        )?;
-        let (report, _) = run_with_progress(
-            &job,
-            &format!("writing {name}"),
-            &plates,
-            Summary::default(),
-        )?;
-        report.clear();
-        if !plates.quiet {
-            let extra = if kind == PlateKind::Fg {
-                "Z, forward.u/v"
-            } else {
-                "Z"
-            };
-            eprintln!(
-                "wrote {} ({length} frames, {width}x{height} half RGBA + {extra})",
-                pattern(name)
-            );
-        }
-    }
-    let run = RunArgs {
-        frames: Some(format!("{first}-{}", first + length as i64 - 1)),
-        ..run.clone()
-    };
-    let inputs = [pattern("fg"), pattern("bg")];
-    // Differential rendering: the ball and its shadow, rendered on a proxy
-    // ground, put into the bg plate.
-    let shot = [
-        pattern("object"),
-        pattern("proxy"),
-        pattern("shadowed"),
-        pattern("bg"),
-    ];
-    let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
-    add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
-    let (job, summary) = input_job(
-        &shot,
-        &pattern("diffrender"),
-        graph.finish(),
-        3,
-        &LayerArgs::default(),
-        &RunArgs {
-            quiet: plates.quiet,
-            ..run.clone()
-        },
-    )?;
-    if !plates.quiet {
-        eprintln!(
-            "differential rendering into {}: object over the plate with the shadow it casts on the proxy",
-            pattern("diffrender")
-        );
-    }
-    run_job(&job, "diffrender", &plates, summary)?;
-    if !plates.quiet {
-        eprintln!(
-            "one pass into {}: fg motion-blurred by its forward.u/v, over bg defocused by its Z",
-            pattern("comp")
-        );
-    }
-    // The streaks' reach measured over the fg frames first.
-    let layers = LayerArgs::default();
-    let (fg, _) = input_job(
-        &inputs[..1],
-        &pattern("comp"),
-        Graph::identity(),
-        0,
-        &layers,
-        &run,
-    )?;
-    let reach = max_over_rows(&fg, 0, ["forward.u", "forward.v"], |u, v| {
-        vblur::rows_reached(1.0, u, v)
-    })?;
-    let (mut graph, nodes) = GraphBuilder::with_inputs(inputs.len());
-    let reach = reach.to_string();
-    let moving = add(
-        &mut graph,
-        &vblur::VBLUR,
-        &[("max_displacement", &reach)],
-        &nodes[..1],
-    )?;
-    let defocus = [
-        ("focus", "5"),
-        ("scale", "4"),
-        ("max_radius", "4"),
-        ("aperture", "hexagon"),
-    ];
-    let defocused = add(&mut graph, &defocus::DEFOCUS, &defocus, &nodes[1..])?;
-    add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
-    let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &run)?;
-    run_job(&job, "demo", &run, summary).map(drop)
-}
-
-/// `n things` or `1 thing`.
-fn count(n: usize, thing: &str) -> String {
-    match n {
-        1 => format!("1 {thing}"),
-        n => format!("{n} {thing}s"),
     }
 }

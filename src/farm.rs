@@ -68,8 +68,9 @@ pub struct TaskCommand {
 /// subcommand's name and its matches.
 pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::ArgMatches)> {
     let args = split_joined_values(command);
-    let matches = Cli::command()
+    let matches = crate::cli::command()
         .try_get_matches_from(argv(&args))
+        .and_then(|m| crate::cli::refuse_not_applicable(&m).map(|()| m))
         .map_err(|e| {
             let message = e.to_string();
             let first = message.lines().next().unwrap_or_default();

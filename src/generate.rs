@@ -20,6 +20,15 @@ pub enum PlateKind {
     Proxy,
     /// The object over the proxy with the ball's soft shadow on the ground.
     Shadowed,
+    /// The demo's background for depth of field: a checker whose depth
+    /// recedes from 3 (bottom) to 60 (top), 1/Z linear in y so that a
+    /// defocus's blur grows in proportion to the distance from its focus
+    /// row, with bright dots that show the aperture's shape; RGBA and Z.
+    Set,
+    /// The demo's foreground for motion blur: a striped ball going round an
+    /// ellipse at 0.3 radians a frame, so it streaks in every frame;
+    /// premultiplied RGBA, Z and forward.u, forward.v.
+    Ball,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,7 +60,76 @@ impl Plate {
     }
 }
 
+/// The `Set`'s nearest and farthest depth (bottom and top rows).
+pub const SET_DEPTH: (f32, f32) = (3.0, 60.0);
+
+/// The `Ball`'s angular speed round its ellipse, radians a frame.
+const BALL_SPEED: f32 = 0.3;
+
 impl Plate {
+    /// The `Set`'s checker cell, in pixels (whole, so its edges are sharp).
+    pub fn set_cell(&self) -> i32 {
+        (self.height as i32 / 16).max(4)
+    }
+
+    /// The `Set`'s depth at row centre `fy`: 1/Z linear from the top's to
+    /// the bottom's.
+    pub fn set_depth(&self, fy: f32) -> f32 {
+        let (near, far) = SET_DEPTH;
+        1.0 / (1.0 / far + (1.0 / near - 1.0 / far) * fy / self.height as f32)
+    }
+
+    /// A pixel of the `Set`, as [A, B, G, R, Z, u, v].
+    fn set(&self, x: i32, y: i32, frame: i64) -> [f32; 7] {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let (fx, fy) = (x as f32 + 0.5, y as f32 + 0.5);
+        let cell = self.set_cell();
+        let (i, j) = (x.div_euclid(cell), y.div_euclid(cell));
+        let dark = (i + j).rem_euclid(2) == 0;
+        let tone = if dark { 0.25 } else { 0.9 };
+        // A highlight at the middle of every third cell of every other row.
+        let centre = |k: i32| (k as f32 + 0.5) * cell as f32;
+        let spot = (fx - centre(i)).hypot(fy - centre(j)) < (h / 200.0).max(1.0);
+        let light = if spot && i.rem_euclid(3) == 1 && j.rem_euclid(2) == 1 {
+            8.0
+        } else {
+            0.0
+        };
+        let noise = |c| grain(x, y, frame, c) * 0.02;
+        [
+            1.0,
+            tone * (0.6 + 0.3 * fy / h) + light + noise(2),
+            tone * 0.7 + light + noise(1),
+            tone * (0.5 + 0.4 * fx / w) + light + noise(0),
+            self.set_depth(fy),
+            0.0,
+            0.0,
+        ]
+    }
+
+    /// A pixel of the `Ball`, as [A, B, G, R, Z, u, v].
+    fn ball(&self, x: i32, y: i32, frame: i64) -> [f32; 7] {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let (fx, fy) = (x as f32 + 0.5, y as f32 + 0.5);
+        let (a, b, t) = (w * 0.3, h * 0.25, frame as f32 * BALL_SPEED);
+        let (cx, cy) = (w * 0.5 + a * t.cos(), h * 0.5 + b * t.sin());
+        let radius = h * 0.12;
+        let d = (fx - cx).hypot(fy - cy);
+        let alpha = 1.0 - smoothstep(radius - 1.5, radius, d);
+        if alpha <= 0.0 {
+            return [0.0, 0.0, 0.0, 0.0, 1.0e4, 0.0, 0.0];
+        }
+        // Diagonal stripes, so that a streak shows along the motion.
+        let stripe = (((fx - cx + fy - cy) / (radius * 0.4)).floor() as i32).rem_euclid(2) == 0;
+        let [r, g, bl] = if stripe {
+            [0.9, 0.12, 0.04]
+        } else {
+            [1.0, 0.8, 0.15]
+        };
+        let (u, v) = (-a * BALL_SPEED * t.sin(), b * BALL_SPEED * t.cos());
+        [alpha, alpha * bl, alpha * g, alpha * r, 5.0, u, v]
+    }
+
     /// A pixel of the differential-rendering scene (no grain: renders), as
     /// [A, B, G, R, Z, u, v].
     fn scene(&self, kind: PlateKind, fx: f32, fy: f32) -> [f32; 7] {
@@ -115,7 +193,7 @@ impl Op for Plate {
         };
         let mut names = vec!["A", "B", "G", "R"];
         names.push("Z");
-        if self.kind == PlateKind::Fg {
+        if matches!(self.kind, PlateKind::Fg | PlateKind::Ball) {
             names.extend(["forward.u", "forward.v"]);
         }
         names
@@ -162,6 +240,8 @@ impl Op for Plate {
                             0.0,
                         ]
                     }
+                    PlateKind::Set => self.set(x, y, frame),
+                    PlateKind::Ball => self.ball(x, y, frame),
                     PlateKind::Object | PlateKind::Proxy | PlateKind::Shadowed => {
                         self.scene(self.kind, fx, fy)
                     }

@@ -219,19 +219,18 @@ impl<'a> Node<'a> {
         for key in self.keys.keys() {
             let name = key.get_ref().as_str();
             if !allowed.contains(&name) {
-                let near = allowed
+                // One suggestion when a key is near; the list only when none is.
+                let hint = allowed
                     .iter()
                     .min_by_key(|a| edit_distance(a, name))
                     .filter(|a| edit_distance(a, name) <= 2)
-                    .map(|a| format!(": did you mean `{a}`?"))
-                    .unwrap_or_default();
+                    .map_or_else(
+                        || format!(" (it takes: {})", allowed.join(", ")),
+                        |a| format!(": did you mean `{a}`?"),
+                    );
                 return at.error(
                     key.span(),
-                    format!(
-                        "unknown field `{name}` for node '{}'{near} (it takes: {})",
-                        self.name,
-                        allowed.join(", ")
-                    ),
+                    format!("unknown field `{name}` for node '{}'{hint}", self.name),
                 );
             }
         }

@@ -1,9 +1,6 @@
-use clap::Parser;
-use exrcomp::cli::Cli;
-
 fn main() {
     keep_freed_memory();
-    let mut cli = Cli::parse();
+    let mut cli = exrcomp::cli::parse();
     // The runs that bench times get the threads it was given.
     if let exrcomp::cli::Command::Bench(bench) = &mut cli.command {
         bench.threads = cli.threads;

@@ -1,7 +1,8 @@
 //! Progress on the terminal and the summary at the end of a run.
 
 use crate::engine::stage_time::{self, StageTimes};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use crate::io::sequence::format_frame_list;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
 use std::time::{Duration, Instant};
 
 pub struct Report {
@@ -24,28 +25,40 @@ pub struct Summary {
     pub failed: Vec<(i64, String)>,
     /// Output frames left out for a missing input (--missing skip).
     pub skipped: Vec<i64>,
+    /// Frames the range named (with those skipped); 0: as many as written.
+    pub named: usize,
     /// Input frames held or made black (--missing hold|black).
     pub replaced: Vec<String>,
     pub interrupted: bool,
     /// Where the run's CPU time went, once it has run.
     pub stages: Option<StageTimes>,
+    /// What the job assumed where users slip (`engine::assumptions`),
+    /// printed before it runs.
+    pub warnings: Vec<String>,
 }
 
 impl Report {
-    /// A progress bar over `frames` frames, drawn only on a terminal and
-    /// neither with `quiet` nor `json`.
+    /// A progress bar over `frames` frames, drawn only on a terminal
+    /// (standard error, with `json` too) and not with `quiet`.
     pub fn new(label: &str, frames: usize, quiet: bool, json: bool) -> Self {
-        let target = if quiet || json {
+        let target = if quiet {
             ProgressDrawTarget::hidden()
         } else {
             ProgressDrawTarget::stderr()
         };
         let bar = ProgressBar::with_draw_target(Some(frames as u64), target);
+        let unit = if frames == 1 { "frame" } else { "frames" };
         bar.set_style(
-            ProgressStyle::with_template(
-                "{prefix} [{bar:30}] {pos}/{len} frames  {per_sec:.1}  ETA {eta}",
-            )
+            ProgressStyle::with_template(&format!(
+                "{{prefix}} [{{bar:30}}] {{pos}}/{{len}} {unit}  {{rate}}  ETA {{eta}}"
+            ))
             .expect("valid template")
+            .with_key(
+                "rate",
+                |state: &ProgressState, w: &mut dyn std::fmt::Write| {
+                    let _ = write!(w, "{}", frame_rate(state.per_sec()));
+                },
+            )
             .progress_chars("=> "),
         );
         bar.set_prefix(label.to_string());
@@ -116,30 +129,33 @@ impl Report {
             eprintln!("frame {frame} failed: {reason}");
         }
         if summary.interrupted {
-            eprintln!("interrupted after {} frames", summary.frames);
+            eprintln!("interrupted after {}", count(summary.frames, "frame"));
         }
         if !self.quiet {
             if !summary.kept.is_empty() {
                 eprintln!(
-                    "{} frames already complete, kept (--resume)",
-                    summary.kept.len()
-                );
-            }
-            if !summary.skipped.is_empty() {
-                eprintln!(
-                    "{} frames left out for missing input: {:?}",
-                    summary.skipped.len(),
-                    summary.skipped
+                    "{} already complete, kept (--resume)",
+                    count(summary.kept.len(), "frame")
                 );
             }
             for line in &summary.replaced {
                 eprintln!("{line}");
             }
+            // Fewer frames than the range named: the last line says so.
+            let short = match summary.skipped.as_slice() {
+                [] => String::new(),
+                skipped => format!(
+                    "; {} of the {} frames named left out for missing input (--missing skip): {}",
+                    skipped.len(),
+                    summary.named.max(summary.frames + skipped.len()),
+                    format_frame_list(skipped)
+                ),
+            };
             eprintln!(
-                "{} frames in {:.2} s: {:.2} frames/s, {:.1} Mpixels/s, peak memory {}",
-                summary.frames,
+                "{} in {:.2} s: {}, {:.1} Mpixels/s, peak memory {}{short}",
+                count(summary.frames, "frame"),
                 summary.seconds,
-                summary.frames as f64 / seconds,
+                frame_rate(summary.frames as f64 / seconds),
                 summary.pixels as f64 / seconds / 1e6,
                 rss.map_or("unknown".to_string(), |b| format!(
                     "{:.1} MiB",
@@ -150,10 +166,36 @@ impl Report {
     }
 }
 
+/// `n things` or `1 thing`.
+pub fn count(n: usize, thing: &str) -> String {
+    match n {
+        1 => format!("1 {thing}"),
+        n => format!("{n} {thing}s"),
+    }
+}
+
+/// "0.30 frames/s", as the progress bar and the summary both say it.
+pub fn frame_rate(per_second: f64) -> String {
+    format!("{per_second:.2} frames/s")
+}
+
 /// Peak resident set size of this process (Linux: VmHWM).
 pub fn peak_rss_bytes() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_and_rates_read_as_words() {
+        assert_eq!(count(1, "frame"), "1 frame");
+        assert_eq!(count(0, "frame"), "0 frames");
+        assert_eq!(count(24, "file"), "24 files");
+        assert_eq!(frame_rate(0.2641), "0.26 frames/s");
+    }
 }

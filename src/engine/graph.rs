@@ -38,6 +38,19 @@ pub trait Op: Send + Sync {
         Ok(None)
     }
 
+    /// What the op assumes of inputs that may not be what the user meant
+    /// (a foreground without alpha taken as opaque): one warning each,
+    /// saying what was assumed and what changes it. `names` says what each
+    /// input is (a file, or another node's result).
+    fn assumptions(
+        &self,
+        _names: &[String],
+        _inputs: &[&[ChannelDescription]],
+        _windows: &[IntegerBounds],
+    ) -> Vec<String> {
+        Vec::new()
+    }
+
     /// The output's data window, given each input's.
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         inputs

@@ -1,5 +1,6 @@
 //! The streaming engine: a graph of nodes evaluated strip by strip.
 
+pub mod assumptions;
 pub mod compose;
 pub mod decode;
 pub mod deep_input;

@@ -3,7 +3,7 @@
 
 use super::plan::{FrameSources, Source};
 use crate::error::{Error, Kind, Result};
-use crate::io::sequence::{format_frame_list, FramePattern, InputTime};
+use crate::io::sequence::{frames_named, FramePattern, InputTime};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MissingPolicy {
@@ -81,12 +81,12 @@ pub fn resolve(
                 "no frames on disk".to_string()
             } else if time != InputTime::default() {
                 format!(
-                    "missing frames {} (read for output frames {})",
-                    format_frame_list(&missing),
-                    format_frame_list(&missing_out)
+                    "missing {} (read for output {})",
+                    frames_named(&missing),
+                    frames_named(&missing_out)
                 )
             } else {
-                format!("missing frames {}", format_frame_list(&missing))
+                format!("missing {}", frames_named(&missing))
             };
             return Err(Error::new(Kind::Input, format!("{name}: {what}")));
         }
@@ -105,12 +105,13 @@ pub fn resolve(
         match policy {
             MissingPolicy::Skip => resolved.skipped.extend(&missing_out),
             MissingPolicy::Hold => resolved.replaced.push(format!(
-                "{name}: frames {} held from the nearest earlier frame",
-                format_frame_list(&missing)
+                "{name}: {} held from the nearest earlier frame",
+                frames_named(&missing)
             )),
             MissingPolicy::Black => resolved.replaced.push(format!(
-                "{name}: frames {} are transparent black",
-                format_frame_list(&missing)
+                "{name}: {} {} transparent black",
+                frames_named(&missing),
+                if missing.len() == 1 { "is" } else { "are" }
             )),
             MissingPolicy::Error => unreachable!("handled above"),
         }

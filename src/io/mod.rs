@@ -5,6 +5,7 @@ pub mod deep;
 pub mod deflate;
 pub mod overwrite;
 pub mod parts;
+pub mod png;
 pub mod reader;
 pub mod sequence;
 pub mod standard_attributes;

@@ -317,9 +317,23 @@ pub fn format_frame_list(frames: &[i64]) -> String {
     parts.join(", ")
 }
 
+/// `frame 1003` or `frames 1001, 1003-1005`, for messages.
+pub fn frames_named(frames: &[i64]) -> String {
+    match frames {
+        [one] => format!("frame {one}"),
+        _ => format!("frames {}", format_frame_list(frames)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn one_frame_is_named_in_the_singular() {
+        assert_eq!(frames_named(&[1003]), "frame 1003");
+        assert_eq!(frames_named(&[1, 3, 4, 5]), "frames 1, 3-5");
+    }
 
     #[test]
     fn hashes_pad_one_digit_each() {

@@ -273,6 +273,37 @@ impl Op for Matte {
         out
     }
 
+    /// A clean plate whose data window is not the footage's: compared
+    /// pixel for pixel at the same coordinates, not scaled.
+    fn assumptions(
+        &self,
+        names: &[String],
+        _: &[&[ChannelDescription]],
+        windows: &[IntegerBounds],
+    ) -> Vec<String> {
+        let Pull::Difference(_) = self.0 else {
+            return Vec::new();
+        };
+        let size = |w: IntegerBounds| format!("{}x{}", w.size.width(), w.size.height());
+        match windows {
+            [footage, plate] if footage != plate => vec![format!(
+                "the clean plate {} ({} at {}, {}) is not the size and place of the footage {} \
+                 ({} at {}, {}): they are compared at the same pixel coordinates, not scaled, \
+                 and where the plate has no pixels the footage is matted against black; resize \
+                 the plate to the footage first (e.g. oiiotool --resize)",
+                names[1],
+                size(*plate),
+                plate.position.x(),
+                plate.position.y(),
+                names[0],
+                size(*footage),
+                footage.position.x(),
+                footage.position.y(),
+            )],
+            _ => Vec::new(),
+        }
+    }
+
     /// The footage's window: a matte is pulled where there is footage.
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         inputs[0]

@@ -344,6 +344,35 @@ impl Op for Merge {
         self.layers.check(inputs)
     }
 
+    /// A top input without alpha, where the operator reads its alpha: it is
+    /// opaque inside its data window, hiding B there.
+    fn assumptions(
+        &self,
+        names: &[String],
+        inputs: &[&[ChannelDescription]],
+        _: &[IntegerBounds],
+    ) -> Vec<String> {
+        if !matches!(self.op, MergeOp::Over | MergeOp::Atop | MergeOp::Xor) {
+            return Vec::new();
+        }
+        let has = |name: &String| inputs[0].iter().any(|c| c.name.eq(name.as_str()));
+        self.layers
+            .resolve(inputs)
+            .iter()
+            .filter(|layer| layer.colours().any(|c| has(&c)) && !layer.alphas.iter().any(has))
+            .map(|layer| {
+                format!(
+                    "{} has no alpha channel ({}): it is taken as opaque (alpha 1 inside its \
+                     data window), hiding {} there; to add its colour instead use merge --op \
+                     plus, or choose the layer holding its alpha with --layer",
+                    names[0],
+                    layer.alpha_channel(),
+                    names[1]
+                )
+            })
+            .collect()
+    }
+
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
         let (a, b) = (inputs[0], inputs[1]);
         let window = match self.op.bounds() {

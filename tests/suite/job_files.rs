@@ -47,15 +47,16 @@ fn the_over_example_writes_what_exrcomp_over_writes() {
 fn the_chain_example_equals_its_steps_run_one_by_one() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    sequence(d, "element", 3, 0, false);
-    sequence(d, "grade", 4, 2, false);
-    sequence(d, "fx", 5, -3, false);
-    sequence(d, "bg", 6, 1, true);
+    // Named as the plates `exrcomp generate` makes, which the example reads.
+    sequence(d, "ball", 3, 0, false);
+    sequence(d, "bg", 4, 2, false);
+    sequence(d, "fg", 5, -3, false);
+    sequence(d, "set", 6, 1, true);
     std::fs::copy(examples().join("chain.toml"), d.join("chain.toml")).unwrap();
     ok(&["run", s(&d.join("chain.toml")), "-q", "--strip-rows", "5"]);
     // The same steps through files (float, so nothing is rounded between).
     let p = |n: &str| d.join(format!("{n}.####.exr"));
-    ok(&["premult", s(&p("element")), "-o", s(&p("s1")), "-q"]);
+    ok(&["premult", s(&p("ball")), "-o", s(&p("s1")), "-q"]);
     ok(&[
         "merge",
         "--op",
@@ -63,16 +64,16 @@ fn the_chain_example_equals_its_steps_run_one_by_one() {
         "--mix",
         "0.5",
         s(&p("s1")),
-        s(&p("grade")),
+        s(&p("bg")),
         "-o",
         s(&p("s2")),
         "-q",
     ]);
     ok(&[
         "stack",
-        s(&p("fx")),
+        s(&p("fg")),
         s(&p("s2")),
-        s(&p("bg")),
+        s(&p("set")),
         "-o",
         s(&p("s3")),
         "-q",
@@ -159,6 +160,25 @@ fn errors_name_the_job_file_line() {
     let (code, message) = run_job(d, READS);
     assert_eq!(code, Some(2), "{message}");
     assert!(message.contains("no write node"), "{message}");
+}
+
+#[test]
+fn a_near_miss_gets_one_suggestion_not_the_list() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = "[[node]]\nname = \"m\"\nop = \"blur\"\nradios = 3\ninputs = [\"a\"]\n";
+    let (_, message) = run_job(
+        dir.path(),
+        &format!(
+            "{READS}\n{job}\n[[node]]\nname = \"o\"\nwrite = \"o.####.exr\"\ninputs = [\"m\"]\n"
+        ),
+    );
+    assert!(
+        message.contains("unknown field `radios` for node 'm': did you mean `radius`?"),
+        "{message}"
+    );
+    assert!(!message.contains("it takes"), "{message}");
+    let (_, message) = run_job(dir.path(), &format!("{READS}\n[[node]]\nname = \"m\"\nop = \"blur\"\nsmoothness = 3\nradius = 1\ninputs = [\"a\"]\n"));
+    assert!(message.contains("(it takes: "), "{message}");
 }
 
 #[test]

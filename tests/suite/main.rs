@@ -14,6 +14,7 @@ mod deep;
 mod depth_and_motion;
 mod diffrender_and_zmerge;
 mod farm;
+mod first_run;
 mod grades;
 mod hostile;
 mod job_files;

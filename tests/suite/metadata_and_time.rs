@@ -421,7 +421,7 @@ fn inputs_read_other_frames_by_offset_or_hold() {
     assert_eq!(failed.status.code(), Some(3));
     assert!(
         stderr(&failed)
-            .contains("fg.####.exr@+11: missing frames 1014 (read for output frames 1003)"),
+            .contains("fg.####.exr@+11: missing frame 1014 (read for output frame 1003)"),
         "{}",
         stderr(&failed)
     );

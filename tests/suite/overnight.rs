@@ -81,11 +81,7 @@ fn missing_frames_skip_hold_or_black() {
 
     let out = over("error", "error/c.####.exr");
     assert_eq!(out.status.code(), Some(3));
-    assert!(
-        stderr(&out).contains("missing frames 3"),
-        "{}",
-        stderr(&out)
-    );
+    assert!(stderr(&out).contains("missing frame 3"), "{}", stderr(&out));
 }
 
 #[test]

@@ -35,11 +35,7 @@ fn frames_default_to_those_on_disk_gaps_included_and_printf_patterns_work() {
     // The gap at 9 is a missing frame, listed before any work.
     let out = over(&[]);
     assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
-    assert!(
-        stderr(&out).contains("missing frames 9"),
-        "{}",
-        stderr(&out)
-    );
+    assert!(stderr(&out).contains("missing frame 9"), "{}", stderr(&out));
     assert!(!d.join("out").exists());
     let out = over(&["--missing", "skip"]);
     assert!(out.status.success(), "{}", stderr(&out));

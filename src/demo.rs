@@ -1,0 +1,250 @@
+//! `exrcomp demo`: a synthetic shot staged so that each effect shows, its
+//! composite in one pass, and a contact sheet of what each step did
+//! (specs/demo.md).
+
+use crate::cli::{LayerArgs, RunArgs};
+use crate::commands::{add, input_job, plate_job, run_job, run_with_progress};
+use crate::engine::graph::{Graph, GraphBuilder, NodeId};
+use crate::engine::prepass::max_over_rows;
+use crate::error::{Error, Result};
+use crate::generate::{PixelType, Plate, PlateKind};
+use crate::io::sequence::FramePattern;
+use crate::ops::{defocus, diffrender, merge, vblur};
+use crate::report::{count, Summary};
+use std::path::Path;
+
+/// The defocus's focus depth: the `Set`'s row at 47% of its height (its
+/// depth runs 60 to 3, top to bottom, 1/Z linear).
+pub const FOCUS: f32 = 6.0;
+/// The motion blur's shutter, in frames (open the whole frame: 360 degrees).
+pub const SHUTTER: f32 = 1.0;
+/// The contact sheet's panel width (narrower plates: their own width).
+pub const PANEL_WIDTH: usize = 480;
+
+/// The contact sheet's columns, in order, and the sequence each shows.
+const COLUMNS: [(&str, &str); 6] = [
+    ("ball", "ball"),
+    ("set", "set"),
+    ("ball vblur", "moving"),
+    ("set defocus", "defocused"),
+    ("comp", "comp"),
+    ("diffrender", "diffrender"),
+];
+
+/// Writes the shot's plates into `dir`, composites them (the ball
+/// motion-blurred over the set defocused, one pass; the differential
+/// rendering shot), each effect alone on a few frames, and the contact sheet.
+pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
+    let first = 1001;
+    let last = first + length as i64 - 1;
+    let pattern = |name: &str| {
+        dir.join(format!("{name}.####.exr"))
+            .to_string_lossy()
+            .into_owned()
+    };
+    // The plates show a progress bar but no summary: the composites' are the point.
+    let plates = RunArgs {
+        quiet: true,
+        json: false,
+        ..run.clone()
+    };
+    let talk = |line: String| {
+        if !run.quiet {
+            eprintln!("{line}");
+        }
+    };
+    let kinds = [
+        ("ball", PlateKind::Ball, "Z, forward.u/v"),
+        ("set", PlateKind::Set, "Z"),
+        ("object", PlateKind::Object, "Z"),
+        ("proxy", PlateKind::Proxy, "Z"),
+        ("shadowed", PlateKind::Shadowed, "Z"),
+    ];
+    for (name, kind, extra) in kinds {
+        let plate = Plate {
+            kind,
+            width,
+            height,
+            origin: (0, 0),
+            pixel_type: PixelType::Half,
+        };
+        let output = FramePattern::output(&pattern(name))?;
+        let job = plate_job(plate, output, (first..=last).collect(), &plates)?;
+        let progress = RunArgs {
+            quiet: run.quiet,
+            ..plates.clone()
+        };
+        let label = format!("writing {name}");
+        let (report, _) = run_with_progress(&job, &label, &progress, Summary::default())?;
+        report.clear();
+        talk(format!(
+            "wrote {} ({}, {width}x{height} half RGBA + {extra})",
+            pattern(name),
+            count(length, "frame")
+        ));
+    }
+    let all = RunArgs {
+        frames: Some(format!("{first}-{last}")),
+        ..run.clone()
+    };
+    let layers = LayerArgs::default();
+    let effects = Effects::measure(&pattern("ball"), height, &all)?;
+
+    // Each effect alone, on the frames the contact sheet shows.
+    let shown: Vec<i64> = {
+        let mut frames = vec![first, first + (length as i64 - 1) / 2, last];
+        frames.dedup();
+        frames
+    };
+    let listed: Vec<String> = shown.iter().map(i64::to_string).collect();
+    let alone = RunArgs {
+        frames: Some(listed.join(",")),
+        ..plates.clone()
+    };
+    for (input, output) in [("ball", "moving"), ("set", "defocused")] {
+        let (mut graph, nodes) = GraphBuilder::with_inputs(1);
+        match input {
+            "ball" => effects.blur(&mut graph, nodes[0])?,
+            _ => effects.defocus(&mut graph, nodes[0])?,
+        };
+        let (job, summary) = input_job(
+            &[pattern(input)],
+            &pattern(output),
+            graph.finish(),
+            0,
+            &layers,
+            &alone,
+        )?;
+        run_job(&job, output, &alone, summary)?;
+    }
+
+    // Differential rendering: the ball and its shadow, rendered on a proxy
+    // ground, put into the set plate.
+    let shot = [
+        pattern("object"),
+        pattern("proxy"),
+        pattern("shadowed"),
+        pattern("set"),
+    ];
+    let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
+    add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
+    let (job, summary) = input_job(
+        &shot,
+        &pattern("diffrender"),
+        graph.finish(),
+        3,
+        &layers,
+        &all,
+    )?;
+    talk(format!(
+        "differential rendering into {}: object over the plate with the shadow it casts on the proxy",
+        pattern("diffrender")
+    ));
+    run_job(&job, "diffrender", &all, summary)?;
+
+    talk(format!(
+        "one pass into {}: ball motion-blurred by its forward.u/v ({SHUTTER} frame shutter), over \
+         the set defocused by its Z (focus {FOCUS}, hexagonal aperture)",
+        pattern("comp")
+    ));
+    let inputs = [pattern("ball"), pattern("set")];
+    let (mut graph, nodes) = GraphBuilder::with_inputs(inputs.len());
+    let moving = effects.blur(&mut graph, nodes[0])?;
+    let defocused = effects.defocus(&mut graph, nodes[1])?;
+    add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
+    let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &all)?;
+    run_job(&job, "demo", &all, summary)?;
+
+    let sheet = dir.join("contact-sheet.png");
+    let rows: Vec<(String, Vec<_>)> = shown
+        .iter()
+        .map(|&frame| {
+            let files = COLUMNS
+                .iter()
+                .map(|(_, name)| FramePattern::parse(&pattern(name)).map(|p| p.path(frame)))
+                .collect::<Result<_>>()?;
+            Ok((format!("frame {frame}"), files))
+        })
+        .collect::<Result<_>>()?;
+    let titles: Vec<&str> = COLUMNS.iter().map(|(title, _)| *title).collect();
+    crate::contact_sheet::write(&sheet, PANEL_WIDTH.min(width), &titles, &rows)?;
+    let (files, bytes) = folder_size(dir)?;
+    talk(format!(
+        "contact sheet: {} (columns: {}; rows: {})",
+        sheet.display(),
+        titles.join(", "),
+        listed.join(", ")
+    ));
+    talk(format!(
+        "{} holds {:.1} MB in {}",
+        dir.display(),
+        bytes as f64 / 1e6,
+        count(files, "file")
+    ));
+    Ok(())
+}
+
+/// The two effects' parameters: the defocus's scaled to the plate's height,
+/// the motion blur's reach measured over the ball's frames.
+struct Effects {
+    defocus: [(&'static str, String); 4],
+    reach: String,
+}
+
+impl Effects {
+    fn measure(ball: &str, height: usize, run: &RunArgs) -> Result<Self> {
+        let (job, _) = input_job(
+            &[ball.to_string()],
+            ball,
+            Graph::identity(),
+            0,
+            &LayerArgs::default(),
+            &RunArgs {
+                dry_run: true,
+                ..run.clone()
+            },
+        )?;
+        let reach = max_over_rows(&job, 0, ["forward.u", "forward.v"], |u, v| {
+            vblur::rows_reached(SHUTTER, u, v)
+        })?;
+        // The nearest blur a 60th of the height (18 pixels at 1080), the
+        // farthest 0.9 of that.
+        let scale = (height as f32 / 60.0).max(1.0);
+        Ok(Effects {
+            defocus: [
+                ("focus", FOCUS.to_string()),
+                ("scale", scale.to_string()),
+                ("max_radius", (scale.ceil() as u32).to_string()),
+                ("aperture", "hexagon".to_string()),
+            ],
+            reach: reach.to_string(),
+        })
+    }
+
+    fn blur(&self, graph: &mut GraphBuilder, input: NodeId) -> Result<NodeId> {
+        let shutter = SHUTTER.to_string();
+        let values = [
+            ("scale", shutter.as_str()),
+            ("max_displacement", &self.reach),
+        ];
+        add(graph, &vblur::VBLUR, &values, &[input])
+    }
+
+    fn defocus(&self, graph: &mut GraphBuilder, input: NodeId) -> Result<NodeId> {
+        let values: Vec<(&str, &str)> =
+            self.defocus.iter().map(|(k, v)| (*k, v.as_str())).collect();
+        add(graph, &defocus::DEFOCUS, &values, &[input])
+    }
+}
+
+/// The files in `dir` and their bytes.
+fn folder_size(dir: &Path) -> Result<(usize, u64)> {
+    let entries = std::fs::read_dir(dir).map_err(|e| Error::output(dir, None, e))?;
+    let mut total = (0, 0);
+    for entry in entries.flatten() {
+        if let Some(meta) = entry.metadata().ok().filter(|m| m.is_file()) {
+            total = (total.0 + 1, total.1 + meta.len());
+        }
+    }
+    Ok(total)
+}

@@ -1,0 +1,107 @@
+//! Warnings, before a run, where users slip: inputs whose display windows
+//! differ, and what each operation assumes of its inputs
+//! (`Op::assumptions`). They are read from the first frame of each input;
+//! `commands::run_job` prints each once, unless `--quiet`.
+
+use super::graph::Node;
+use super::plan::{HeaderBase, Job, Source};
+use crate::io::parts::choose_part;
+use crate::io::reader::ExrFile;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use exr::meta::header::Header;
+
+/// The warnings for `job`, whose inputs were given as `texts`. None when a
+/// first frame cannot be read or decoded (the run reports that) or is made
+/// black.
+pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
+    let Some(first) = job.frames.first() else {
+        return Vec::new();
+    };
+    let headers: Option<Vec<Header>> = (0..job.inputs.len())
+        .map(|i| {
+            let Source::Frame(frame) = first.inputs[i] else {
+                return None;
+            };
+            let file = ExrFile::open(&job.inputs[i].path(frame), None).ok()?;
+            let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
+            // A part the run cannot decode is its error alone.
+            file.check_codec(part).ok()?;
+            Some(file.header(part).clone())
+        })
+        .collect();
+    let Some(headers) = headers else {
+        return Vec::new();
+    };
+    let mut warnings = display_windows(job, texts, &headers);
+    let graph = &job.graph;
+    let channels = graph.evaluate(
+        |i| headers[i].channels.list.to_vec(),
+        |op, args| {
+            let lists: Vec<&[ChannelDescription]> = args.iter().map(Vec::as_slice).collect();
+            op.channels(&lists)
+        },
+    );
+    let windows = graph.evaluate(
+        |i| {
+            IntegerBounds::new(
+                headers[i].own_attributes.layer_position,
+                headers[i].layer_size,
+            )
+        },
+        |op, args| op.data_window(args),
+    );
+    for node in &graph.nodes {
+        if let Node::Op { op, inputs, .. } = node {
+            let names: Vec<String> = inputs
+                .iter()
+                .map(|&n| match graph.nodes[n] {
+                    Node::Input(i) => texts[i].clone(),
+                    _ => format!("the result of node {n}"),
+                })
+                .collect();
+            let lists: Vec<&[ChannelDescription]> =
+                inputs.iter().map(|&n| channels[n].as_slice()).collect();
+            let boxes: Vec<IntegerBounds> = inputs.iter().map(|&n| windows[n]).collect();
+            warnings.extend(
+                op.assumptions(&names, &lists, &boxes)
+                    .into_iter()
+                    .map(|w| node.locate(w)),
+            );
+        }
+    }
+    warnings
+}
+
+/// An input whose display window is not the header input's: the output
+/// keeps the header input's, and pixels meet at their coordinates.
+fn display_windows(job: &Job, texts: &[String], headers: &[Header]) -> Vec<String> {
+    let HeaderBase::Input(kept) = job.header_base else {
+        return Vec::new();
+    };
+    let display = |i: usize| headers[i].shared_attributes.display_window;
+    let shown = |b: IntegerBounds| {
+        let end = b.max();
+        format!(
+            "({} {}) - ({} {})",
+            b.position.x(),
+            b.position.y(),
+            end.x(),
+            end.y()
+        )
+    };
+    (0..headers.len())
+        .filter(|&i| i != kept && display(i) != display(kept))
+        .map(|i| {
+            format!(
+                "{}'s display window {} is not {}'s {}: the output keeps {}'s, and the two meet \
+                 pixel for pixel at the same coordinates, neither scaled nor moved (resize or \
+                 move one first, e.g. oiiotool --resize or --origin)",
+                texts[i],
+                shown(display(i)),
+                texts[kept],
+                shown(display(kept)),
+                texts[kept]
+            )
+        })
+        .collect()
+}
