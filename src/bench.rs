@@ -541,13 +541,15 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     };
     let regressions = print_table(&record, baseline.as_ref(), args.tolerance / 100.0);
     if let Some(path) = &args.json {
-        write_text(
-            path,
-            &(serde_json::to_string_pretty(&record).expect("JSON") + "\n"),
-        )?;
+        let text = serde_json::to_string_pretty(&record).expect("JSON") + "\n";
+        write_bytes(path, text.as_bytes())?;
     }
     if let Some(path) = &args.report {
-        write_text(path, &crate::bench_chart::svg(&record, baseline.as_ref()))?;
+        let chart = match path.extension().and_then(|e| e.to_str()) {
+            Some("png") => crate::bench_chart::png(&record, baseline.as_ref()),
+            _ => crate::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
+        };
+        write_bytes(path, &chart)?;
     }
     match regressions.is_empty() {
         true => Ok(()),
@@ -580,8 +582,8 @@ fn read_record(path: &Path) -> Result<Value> {
     }
 }
 
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).map_err(|e| Error::output(path, None, format!("cannot write: {e}")))
+fn write_bytes(path: &Path, bytes: &[u8]) -> Result<()> {
+    std::fs::write(path, bytes).map_err(|e| Error::output(path, None, format!("cannot write: {e}")))
 }
 
 /// The table on stderr, each job against its baseline; the regressions,

@@ -1,12 +1,46 @@
-//! `bench --report FILE.svg`: each job's runs as dots on a wall-time axis of
-//! its own, the baseline's beside them, medians as bars.
+//! `bench --report FILE.svg|FILE.png`: each job's runs as dots on a
+//! wall-time axis of its own, the baseline's beside them, medians as bars.
+//! One layout of shapes, drawn as SVG or rasterised into a PNG.
 
+use crate::io::png::Rgb8;
 use serde_json::Value;
 use std::fmt::Write;
 
 const ROW: f64 = 56.0;
 const LEFT: f64 = 150.0;
 const WIDTH: f64 = 560.0;
+const NOW: [u8; 3] = [0x1f, 0x6f, 0xd0];
+const BEFORE: [u8; 3] = [0x88, 0x88, 0x88];
+const AXIS: [u8; 3] = [0x99, 0x99, 0x99];
+const INK: [u8; 3] = [0, 0, 0];
+const DOT: f64 = 4.0;
+
+/// What the chart is made of, in pixels from the top left.
+enum Shape {
+    /// Text whose baseline starts at (x, y).
+    Text { x: f64, y: f64, text: String },
+    Line {
+        x1: f64,
+        y1: f64,
+        x2: f64,
+        y2: f64,
+        colour: [u8; 3],
+        width: f64,
+    },
+    /// A run: a dot, its value as a tooltip in SVG.
+    Dot {
+        x: f64,
+        y: f64,
+        colour: [u8; 3],
+        seconds: f64,
+    },
+}
+
+struct Chart {
+    width: f64,
+    height: f64,
+    shapes: Vec<Shape>,
+}
 
 fn runs(job: &Value) -> Vec<f64> {
     job["wall_seconds"]["runs"]
@@ -15,28 +49,17 @@ fn runs(job: &Value) -> Vec<f64> {
         .unwrap_or_default()
 }
 
-fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
-
 /// The chart of `record`'s jobs, with `baseline`'s runs of the same names.
-pub fn svg(record: &Value, baseline: Option<&Value>) -> String {
+fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
     let jobs: &[Value] = record["jobs"].as_array().map_or(&[], Vec::as_slice);
-    let height = 60.0 + ROW * jobs.len() as f64;
-    let mut out = String::new();
-    let _ = write!(
-        out,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{height}\" \
-         font-family=\"sans-serif\" font-size=\"12\">\n\
-         <rect width=\"{w}\" height=\"{height}\" fill=\"white\"/>\n\
-         <text x=\"10\" y=\"20\" font-size=\"14\">exrcomp bench: wall seconds per run \
-         (blue: this record, grey: baseline; bars: medians)</text>\n",
-        w = LEFT + WIDTH + 90.0,
-    );
+    let mut shapes = vec![Shape::Text {
+        x: 10.0,
+        y: 20.0,
+        text:
+            "exrcomp bench: wall seconds per run (blue: this record, grey: baseline; bars: medians)"
+                .into(),
+    }];
     for (i, job) in jobs.iter().enumerate() {
-        let name = job["name"].as_str().unwrap_or("?");
         let before = baseline
             .and_then(|b| {
                 b["jobs"]
@@ -50,36 +73,157 @@ pub fn svg(record: &Value, baseline: Option<&Value>) -> String {
         let top = 40.0 + ROW * i as f64;
         let most = now.iter().chain(&before).fold(1e-9f64, |m, &v| m.max(v)) * 1.1;
         let x = |v: f64| LEFT + WIDTH * v / most;
-        let _ = write!(
-            out,
-            "<text x=\"10\" y=\"{}\">{}</text>\n<line x1=\"{LEFT}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" \
-             stroke=\"#999\"/>\n<text x=\"{}\" y=\"{y}\">{most:.3} s</text>\n",
-            top + 24.0,
-            escape(name),
-            LEFT + WIDTH,
-            LEFT + WIDTH + 6.0,
-            y = top + ROW - 12.0,
-        );
-        for (values, y, colour) in [(&before, top + 12.0, "#888"), (&now, top + 30.0, "#1f6fd0")] {
-            for &v in values.iter() {
-                let _ = writeln!(
-                    out,
-                    "<circle cx=\"{:.1}\" cy=\"{y}\" r=\"4\" fill=\"{colour}\"><title>{v:.4} s</title></circle>",
-                    x(v)
-                );
-            }
+        let axis = top + ROW - 12.0;
+        shapes.push(Shape::Text {
+            x: 10.0,
+            y: top + 24.0,
+            text: job["name"].as_str().unwrap_or("?").to_string(),
+        });
+        shapes.push(Shape::Line {
+            x1: LEFT,
+            y1: axis,
+            x2: LEFT + WIDTH,
+            y2: axis,
+            colour: AXIS,
+            width: 1.0,
+        });
+        shapes.push(Shape::Text {
+            x: LEFT + WIDTH + 6.0,
+            y: axis,
+            text: format!("{most:.3} s"),
+        });
+        for (values, y, colour) in [(&before, top + 12.0, BEFORE), (&now, top + 30.0, NOW)] {
+            shapes.extend(values.iter().map(|&v| Shape::Dot {
+                x: x(v),
+                y,
+                colour,
+                seconds: v,
+            }));
             if !values.is_empty() {
-                let median = crate::bench::Stats::of(values).median;
-                let _ = writeln!(
-                    out,
-                    "<line x1=\"{m:.1}\" y1=\"{}\" x2=\"{m:.1}\" y2=\"{}\" stroke=\"{colour}\" stroke-width=\"2\"/>",
-                    y - 8.0,
-                    y + 8.0,
-                    m = x(median)
-                );
+                let median = x(crate::bench::Stats::of(values).median);
+                shapes.push(Shape::Line {
+                    x1: median,
+                    y1: y - 8.0,
+                    x2: median,
+                    y2: y + 8.0,
+                    colour,
+                    width: 2.0,
+                });
             }
         }
     }
+    Chart {
+        width: LEFT + WIDTH + 90.0,
+        height: 60.0 + ROW * jobs.len() as f64,
+        shapes,
+    }
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+fn hex([r, g, b]: [u8; 3]) -> String {
+    format!("#{r:02x}{g:02x}{b:02x}")
+}
+
+/// The chart as an SVG document.
+pub fn svg(record: &Value, baseline: Option<&Value>) -> String {
+    let chart = layout(record, baseline);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+         font-family=\"sans-serif\" font-size=\"12\">\n\
+         <rect width=\"{w}\" height=\"{h}\" fill=\"white\"/>",
+        w = chart.width,
+        h = chart.height,
+    );
+    for shape in &chart.shapes {
+        let _ = match shape {
+            Shape::Text { x, y, text } => {
+                writeln!(out, "<text x=\"{x}\" y=\"{y}\">{}</text>", escape(text))
+            }
+            Shape::Line { x1, y1, x2, y2, colour, width } => writeln!(
+                out,
+                "<line x1=\"{x1:.1}\" y1=\"{y1}\" x2=\"{x2:.1}\" y2=\"{y2}\" stroke=\"{}\" stroke-width=\"{width}\"/>",
+                hex(*colour)
+            ),
+            Shape::Dot { x, y, colour, seconds } => writeln!(
+                out,
+                "<circle cx=\"{x:.1}\" cy=\"{y}\" r=\"{DOT}\" fill=\"{}\"><title>{seconds:.4} s</title></circle>",
+                hex(*colour)
+            ),
+        };
+    }
     out.push_str("</svg>\n");
     out
+}
+
+/// The chart as a PNG file: the same shapes, the text in the built-in font.
+pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
+    let chart = layout(record, baseline);
+    let (width, height) = (chart.width.ceil() as usize, chart.height.ceil() as usize);
+    let mut image = Rgb8 {
+        width,
+        height,
+        pixels: vec![[255; 3]; width * height],
+    };
+    let mut set = |x: f64, y: f64, colour: [u8; 3]| {
+        if x >= 0.0 && y >= 0.0 && (x as usize) < width && (y as usize) < height {
+            image.pixels[y as usize * width + x as usize] = colour;
+        }
+    };
+    for shape in &chart.shapes {
+        match *shape {
+            Shape::Text { x, y, ref text } => {
+                // The glyphs stand on the baseline, as SVG's text does.
+                let top = y - crate::font::HEIGHT as f64;
+                for (n, c) in text.chars().enumerate() {
+                    for gy in 0..crate::font::HEIGHT {
+                        for gx in 0..crate::font::WIDTH {
+                            if crate::font::lit(c, gx, gy) {
+                                let left = x + (n * crate::font::ADVANCE + gx) as f64;
+                                set(left, top + gy as f64, INK);
+                            }
+                        }
+                    }
+                }
+            }
+            Shape::Line {
+                x1,
+                y1,
+                x2,
+                y2,
+                colour,
+                width,
+            } => {
+                let steps = (x2 - x1).abs().max((y2 - y1).abs()).ceil().max(1.0) as usize;
+                for k in 0..=steps {
+                    let t = k as f64 / steps as f64;
+                    let (x, y) = (x1 + (x2 - x1) * t, y1 + (y2 - y1) * t);
+                    for w in 0..width.ceil() as usize {
+                        // Thick lines widen across their direction.
+                        match x1 == x2 {
+                            true => set(x + w as f64, y, colour),
+                            false => set(x, y + w as f64, colour),
+                        }
+                    }
+                }
+            }
+            Shape::Dot { x, y, colour, .. } => {
+                let r = DOT as i32;
+                for dy in -r..=r {
+                    for dx in -r..=r {
+                        if dx * dx + dy * dy <= r * r {
+                            set(x + dx as f64, y + dy as f64, colour);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    crate::io::png::encode(&image)
 }

@@ -5,7 +5,7 @@ use crate::ops::declare::Operation;
 use crate::params::*;
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `clap::ValueEnum` for a domain type, here so that the type itself needs
 /// no clap: each variant's name on the command line and its help.
@@ -202,8 +202,9 @@ pub struct BenchArgs {
     /// Percent of the baseline's median a job may be slower by.
     #[arg(long, default_value_t = 5.0, value_parser = parse_tolerance)]
     pub tolerance: f64,
-    /// Draw the runs per job (and the baseline's) to this SVG file.
-    #[arg(long, value_hint = ValueHint::FilePath)]
+    /// Draw the runs per job (and the baseline's) to this chart: FILE.svg
+    /// or FILE.png.
+    #[arg(long, value_hint = ValueHint::FilePath, value_parser = parse_chart)]
     pub report: Option<PathBuf>,
     /// Worker threads of the timed runs.
     #[arg(skip)]
@@ -410,6 +411,15 @@ impl RunArgs {
             (None, true) => OutputBlocks::Scanlines,
             (None, false) => OutputBlocks::FollowInput,
         }
+    }
+}
+
+fn parse_chart(text: &str) -> Result<PathBuf, String> {
+    match Path::new(text).extension().and_then(|e| e.to_str()) {
+        Some("svg" | "png") => Ok(PathBuf::from(text)),
+        _ => Err(format!(
+            "'{text}': a chart is written as FILE.svg or FILE.png"
+        )),
     }
 }
 

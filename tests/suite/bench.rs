@@ -107,6 +107,43 @@ fn a_record_holds_the_runs_the_machine_and_leaves_no_output() {
             succeed(std::process::Command::new(python).args(["-c", check, s(&d.join("r.svg"))]));
         assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "3");
     }
+    // The chart as PNG, against the first record as baseline: decoded by
+    // Python, a blue dot at each run's wall time on this record's line and
+    // a grey one at each of the baseline's, on the axis the chart spec
+    // draws (150 px + 560 px x seconds / (1.1 x the slowest run)).
+    let args = [
+        "--runs",
+        "2",
+        "--baseline",
+        "r.json",
+        "--json",
+        "r2.json",
+        "--report",
+        "r.png",
+    ];
+    let transcode = ["--", "transcode", "bg.####.exr", "-o", "t.####.exr"];
+    let out = bench(d, &[&args[..], &transcode].concat(), None);
+    assert!(out.status.success(), "{}", stderr(&out));
+    if let Some((w, h, pixels)) = decode_png(&d.join("r.png")) {
+        assert_eq!((w, h), (800, 116));
+        let runs = |r: &serde_json::Value| -> Vec<f64> {
+            let runs = r["jobs"][0]["wall_seconds"]["runs"].as_array().unwrap();
+            runs.iter().map(|v| v.as_f64().unwrap()).collect()
+        };
+        let (before, now) = (runs(&r), runs(&record(&d.join("r2.json"))));
+        let most = before.iter().chain(&now).fold(0f64, |m, &v| m.max(v)) * 1.1;
+        let at = |v: f64, y: usize| pixels[y * w + (150.0 + 560.0 * v / most) as usize];
+        for v in now {
+            assert_eq!(at(v, 70), [0x1f, 0x6f, 0xd0], "this record's run {v}");
+        }
+        for v in before {
+            assert_eq!(at(v, 52), [0x88; 3], "the baseline's run {v}");
+        }
+        let ink = pixels.iter().filter(|&&p| p == [0; 3]).count();
+        assert!(ink > 100, "the title and the job's name are written");
+    }
+    let out = bench(d, &[&["--report", "r.jpg"][..], &transcode].concat(), None);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
     // A command that writes nothing is refused at once.
     let out = bench(d, &["--", "info", "bg.0001.exr"], None);
     assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));

@@ -13,56 +13,6 @@ fn ok(args: &[&str]) -> String {
     stderr(&out)
 }
 
-/// Decodes an 8-bit RGB PNG with Python's zlib and struct (no filter
-/// assumed: each row's filter type is undone as PNG defines them):
-/// width, height and the pixels.
-fn decode_png(path: &Path) -> Option<(usize, usize, Vec<[u8; 3]>)> {
-    let python = peer("python3")?;
-    let script = r#"
-import struct, sys, zlib
-data = open(sys.argv[1], 'rb').read()
-assert data[:8] == b'\x89PNG\r\n\x1a\n'
-at, idat = 8, b''
-while at < len(data):
-    n, kind = struct.unpack('>I4s', data[at:at + 8])
-    body = data[at + 8:at + 8 + n]
-    assert struct.unpack('>I', data[at + 8 + n:at + 12 + n])[0] == zlib.crc32(kind + body), kind
-    if kind == b'IHDR':
-        w, h, depth, colour = struct.unpack('>IIBB', body[:10])
-        assert (depth, colour) == (8, 2)
-    elif kind == b'IDAT':
-        idat += body
-    at += 12 + n
-raw, stride, rows, prev = zlib.decompress(idat), 3 * w, [], bytearray(3 * w)
-for y in range(h):
-    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-    for i in range(stride):
-        a = line[i - 3] if i >= 3 else 0
-        b, c = prev[i], (prev[i - 3] if i >= 3 else 0)
-        p = a + b - c
-        pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-        pred = [0, a, b, (a + b) // 2, a if pa <= pb and pa <= pc else (b if pb <= pc else c)][f]
-        line[i] = (line[i] + pred) & 255
-    rows.append(bytes(line))
-    prev = line
-sys.stdout.buffer.write(struct.pack('>II', w, h) + b''.join(rows))
-"#;
-    let out = Command::new(python)
-        .args(["-c", script])
-        .arg(path)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", stderr(&out));
-    let w = u32::from_be_bytes(out.stdout[0..4].try_into().unwrap()) as usize;
-    let h = u32::from_be_bytes(out.stdout[4..8].try_into().unwrap()) as usize;
-    let pixels = out.stdout[8..]
-        .chunks(3)
-        .map(|p| [p[0], p[1], p[2]])
-        .collect::<Vec<_>>();
-    assert_eq!(pixels.len(), w * h);
-    Some((w, h, pixels))
-}
-
 /// The sheet's panels: maximal rectangles of pixels other than the
 /// background (24, 24, 32), found as runs over 40 pixels long (text is
 /// never that wide a run), as (x, y, width, height), rows then columns.
