@@ -34,6 +34,12 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
     };
     let mut warnings = display_windows(job, texts, &headers);
     let graph = &job.graph;
+    // As a frame's plan does, display windows before data windows; one an
+    // op refuses is the run's error, not a warning's.
+    let displays = graph.display_windows(|i| headers[i].shared_attributes.display_window);
+    if displays.iter().any(Result::is_err) {
+        return warnings;
+    }
     let channels = graph.evaluate(
         |i| headers[i].channels.list.to_vec(),
         |op, args| {

@@ -224,6 +224,31 @@ impl Graph {
 
     /// Per node, a value computed from its inputs' values: `input` for input
     /// nodes, `combine(op, values of its inputs)` for operations.
+    /// Each node's display window from its inputs' (`input` gives the
+    /// graph inputs'), and whether an op changed it on the way: evaluated
+    /// before data windows, since an op whose geometry follows them (a
+    /// resize's scale) learns them here.
+    pub fn display_windows(
+        &self,
+        input: impl Fn(usize) -> IntegerBounds,
+    ) -> Vec<Result<(IntegerBounds, bool), String>> {
+        self.evaluate(
+            |i| Ok((input(i), false)),
+            |op, args: &[Result<(IntegerBounds, bool), String>]| {
+                let args: Vec<(IntegerBounds, bool)> =
+                    args.iter().cloned().collect::<Result<_, _>>()?;
+                let windows: Vec<IntegerBounds> = args.iter().map(|a| a.0).collect();
+                Ok(match op.display_window(&windows)? {
+                    Some(window) => (window, true),
+                    None => (
+                        windows.last().copied().unwrap_or(IntegerBounds::zero()),
+                        args.iter().any(|a| a.1),
+                    ),
+                })
+            },
+        )
+    }
+
     pub fn evaluate<T: Clone>(
         &self,
         input: impl Fn(usize) -> T,

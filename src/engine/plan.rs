@@ -359,23 +359,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     }
     // Display windows first: an op whose geometry follows them (a resize's
     // scale) learns them before it is asked for data windows and regions.
-    let displays = graph.evaluate(
-        |i| Ok((header_of(i).shared_attributes.display_window, false)),
-        |op, args: &[std::result::Result<(IntegerBounds, bool), String>]| {
-            let args: Vec<(IntegerBounds, bool)> = args
-                .iter()
-                .cloned()
-                .collect::<std::result::Result<_, _>>()?;
-            let windows: Vec<IntegerBounds> = args.iter().map(|a| a.0).collect();
-            Ok(match op.display_window(&windows)? {
-                Some(window) => (window, true),
-                None => (
-                    windows.last().copied().unwrap_or(IntegerBounds::zero()),
-                    args.iter().any(|a| a.1),
-                ),
-            })
-        },
-    );
+    let displays = graph.display_windows(|i| header_of(i).shared_attributes.display_window);
     let (display, resized) = displays[graph.output()].clone().map_err(located)?;
     let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
     let windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
