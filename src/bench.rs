@@ -458,7 +458,7 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
         ),
     )
     .map_err(|e| Error::output(&job_file, None, format!("cannot write: {e}")))?;
-    let jobs: [(&str, Vec<String>); 4] = [
+    let mut jobs: Vec<(&str, Vec<String>)> = vec![
         (
             "transcode",
             vec![
@@ -491,7 +491,36 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
             ],
         ),
         ("over_blur", vec![job_file.to_string_lossy().into_owned()]),
+        // A half-resolution proxy.
+        (
+            "resize",
+            vec![
+                "resize".into(),
+                plate("bg"),
+                "-o".into(),
+                "r.####.exr".into(),
+                "--scale".into(),
+                "0.5".into(),
+            ],
+        ),
     ];
+    // The working space to a log one, in the built-in config.
+    #[cfg(feature = "colour")]
+    jobs.push((
+        "colorconvert",
+        [
+            "colorconvert",
+            &plate("bg"),
+            "-o",
+            "c.####.exr",
+            "--from",
+            "ACEScg",
+            "--to",
+            "ACEScct",
+        ]
+        .map(String::from)
+        .to_vec(),
+    ));
     jobs.into_iter()
         .map(|(name, mut command)| {
             if command[0] != "run" && !command[0].ends_with(".toml") {

@@ -178,7 +178,8 @@ pub struct BenchArgs {
     #[arg(long)]
     pub cold: bool,
     /// Time the standard workload (generated once into the cache folder):
-    /// transcode, over, a stack of 4, over + blur.
+    /// transcode, over, a stack of 4, over + blur, a half-size resize and a
+    /// colour conversion.
     #[arg(long)]
     pub standard: bool,
     /// The standard workload's plate size.
