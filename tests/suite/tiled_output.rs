@@ -96,6 +96,19 @@ fn tiled_output_holds_the_input_pixels() {
     }
 }
 
+/// A job file in `d`, `over.toml`: a.exr over b.exr into job.exr, whose
+/// write node also holds `write_key`.
+fn over_job(d: &Path, write_key: &str) -> std::path::PathBuf {
+    let job = d.join("over.toml");
+    let text = format!(
+        "[[node]]\nname = \"a\"\nread = \"a.exr\"\n\n[[node]]\nname = \"b\"\nread = \"b.exr\"\n\n\
+         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"job.exr\"\ninputs = [\"comp\"]\n{write_key}\n"
+    );
+    std::fs::write(&job, text).unwrap();
+    job
+}
+
 /// The compressed bytes of every tile of `path`, in table order.
 fn tiles(path: &Path) -> Vec<Vec<u8>> {
     let file = ExrFile::open(path, None).unwrap();
@@ -147,12 +160,7 @@ fn tiles_under_a_transparent_foreground_are_the_backgrounds_tiles() {
     }
     assert_peers_read(&out);
     // The job file's `tile` key writes the same file.
-    let job = d.join("over.toml");
-    let text =
-        "[[node]]\nname = \"a\"\nread = \"a.exr\"\n\n[[node]]\nname = \"b\"\nread = \"b.exr\"\n\n\
-         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n\
-         [[node]]\nname = \"out\"\nwrite = \"job.exr\"\ninputs = [\"comp\"]\ntile = \"16x16\"\n";
-    std::fs::write(&job, text).unwrap();
+    let job = over_job(d, "tile = \"16x16\"");
     ok(&["run", s(&job), "-q"]);
     let written = written.unwrap();
     assert_eq!(tiles(&d.join("job.exr")), written);
@@ -235,12 +243,7 @@ fn the_output_is_tiled_as_the_background_is_unless_told() {
     ok(&["over", s(&a), s(&b), "-o", s(&out), "-q", "--scanline"]);
     assert!(is_scanlines(&out));
     assert_identical(&read_image(&out), &reference);
-    let job = d.join("over.toml");
-    let text =
-        "[[node]]\nname = \"a\"\nread = \"a.exr\"\n\n[[node]]\nname = \"b\"\nread = \"b.exr\"\n\n\
-         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"b\"]\n\n\
-         [[node]]\nname = \"out\"\nwrite = \"job.exr\"\ninputs = [\"comp\"]\nscanline = true\n";
-    std::fs::write(&job, text).unwrap();
+    let job = over_job(d, "scanline = true");
     ok(&["run", s(&job), "-q"]);
     assert!(is_scanlines(&d.join("job.exr")));
     ok(&["run", s(&job), "-q", "--tile", "4"]);
