@@ -5,7 +5,9 @@
 use crate::cli::{BenchArgs, Size};
 use crate::error::{Error, Result};
 use crate::farm::{parse_command, Flow};
+use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
+use crate::io::writer::write_whole;
 use serde_json::{json, Value};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -47,7 +49,8 @@ impl Job {
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
             let plan = crate::job::load(Path::new(&inputs[0]))?;
-            inputs = plan.reads.into_iter().map(|(read, _)| read).collect();
+            // The job file, then what it reads.
+            inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
             if output.is_none() {
                 task.args.extend(["-o".to_string(), plan.output]);
                 output = Some(task.args.len() - 1);
@@ -546,6 +549,13 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
             ))
         }
     };
+    // The record and the chart replace nothing a job reads (checked before
+    // the runs, which may take long).
+    let records = [&args.json, &args.report].into_iter().flatten();
+    refuse_overwriting(
+        jobs.iter().flat_map(Job::input_files),
+        records.map(|path| (None, path.clone())),
+    )?;
     let folder = std::env::temp_dir().join(format!("exrcomp-bench-{}", std::process::id()));
     let mut records = Vec::new();
     for job in &jobs {
@@ -571,14 +581,14 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     let regressions = print_table(&record, baseline.as_ref(), args.tolerance / 100.0);
     if let Some(path) = &args.json {
         let text = serde_json::to_string_pretty(&record).expect("JSON") + "\n";
-        write_bytes(path, text.as_bytes())?;
+        write_whole(path, text.as_bytes())?;
     }
     if let Some(path) = &args.report {
         let chart = match path.extension().and_then(|e| e.to_str()) {
             Some("png") => crate::bench_chart::png(&record, baseline.as_ref()),
             _ => crate::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
         };
-        write_bytes(path, &chart)?;
+        write_whole(path, &chart)?;
     }
     match regressions.is_empty() {
         true => Ok(()),
@@ -609,10 +619,6 @@ fn read_record(path: &Path) -> Result<Value> {
             path.display()
         ))),
     }
-}
-
-fn write_bytes(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).map_err(|e| Error::output(path, None, format!("cannot write: {e}")))
 }
 
 /// The table on stderr, each job against its baseline; the regressions,

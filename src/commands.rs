@@ -14,7 +14,7 @@ use crate::error::{Error, Kind, Result};
 use crate::farm;
 use crate::generate::Plate;
 use crate::io::attributes::Edits;
-use crate::io::overwrite::refuse_overwriting;
+use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
 use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, FramePattern};
@@ -32,9 +32,17 @@ pub fn run(command: Command) -> Result<()> {
     execute(command).map(drop)
 }
 
-/// Runs `command`; a dry run of a frame-writing command gives the most
-/// bytes any of its frames would hold at once (`memory_bound`).
-pub fn execute(command: Command) -> Result<Option<u64>> {
+/// What a dry run of a frame-writing command found.
+pub struct DryRun {
+    /// The most bytes any of its frames would hold at once (`memory_bound`).
+    pub memory: u64,
+    /// Every file it would read, and every frame it would write.
+    pub reads: Vec<PathBuf>,
+    pub writes: Vec<PathBuf>,
+}
+
+/// Runs `command`; a dry run of a frame-writing command gives what it found.
+pub fn execute(command: Command) -> Result<Option<DryRun>> {
     match command {
         Command::Op(call) => operation(call),
         Command::Stitch { bands, output } => {
@@ -162,7 +170,7 @@ fn selection(layers: &LayerArgs) -> Selection {
 
 /// An operation's job: its graph built from its declaration, after a first
 /// pass over the inputs for what it measures (none in a dry run).
-fn operation(call: Invocation) -> Result<Option<u64>> {
+fn operation(call: Invocation) -> Result<Option<DryRun>> {
     let op = call.op;
     let mut args = Args {
         op: op.name,
@@ -430,15 +438,15 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code). A dry run plans every
-/// frame and gives the most bytes one of them holds at once.
+/// frame and gives what it found.
 pub(crate) fn run_job(
     job: &Job,
     label: &str,
     run: &RunArgs,
     summary: Summary,
-) -> Result<Option<u64>> {
+) -> Result<Option<DryRun>> {
     let (reads, writes) = job.files();
-    refuse_overwriting(reads, writes)?;
+    refuse_overwriting(reads.iter().cloned(), writes.iter().cloned())?;
     if !run.quiet {
         for warning in &summary.warnings {
             eprintln!("exrcomp: warning: {warning}");
@@ -460,7 +468,11 @@ pub(crate) fn run_job(
                 bound.div_ceil(1 << 20)
             );
         }
-        return Ok(Some(bound));
+        return Ok(Some(DryRun {
+            memory: bound,
+            reads,
+            writes: writes.into_iter().map(|(_, path)| path).collect(),
+        }));
     }
     let (report, summary) = run_with_progress(job, label, run, summary)?;
     planted_delay();
@@ -564,7 +576,10 @@ pub(crate) fn run_with_progress(
         .iter()
         .filter_map(|f| job.output.path(f.frame).parent().map(Path::to_path_buf))
         .collect();
-    folders.iter().for_each(|dir| remove_stale_temporaries(dir));
+    let inputs = FileSet::new(job.files().0);
+    folders
+        .iter()
+        .for_each(|dir| remove_stale_temporaries(dir, &inputs));
     let report = Report::new(label, job.frames.len(), run.quiet, run.json);
     let events = Progress {
         report: &report,

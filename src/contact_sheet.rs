@@ -74,7 +74,7 @@ pub fn write(
             }
         }
     }
-    png::write(path, &sheet).map_err(|e| Error::output(path, None, e))
+    crate::io::writer::write_whole(path, &png::encode(&sheet))
 }
 
 fn display_window(file: &Path) -> Result<(usize, usize)> {

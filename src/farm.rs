@@ -4,8 +4,11 @@
 //! outlines and Deadline job files.
 
 use crate::cli::{Cli, Farm, FarmJob};
+use crate::commands::DryRun;
 use crate::error::{Error, Result};
+use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
 use crate::io::sequence::parse_frame_list;
+use crate::io::writer::write_whole;
 use clap::{CommandFactory, Parser, ValueHint};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -140,7 +143,7 @@ pub fn task_command(
     frames: &str,
     cwd: &Path,
     threads: Option<usize>,
-) -> Result<(TaskCommand, Needs)> {
+) -> Result<(TaskCommand, Needs, DryRun)> {
     if command
         .iter()
         .any(|a| a == "--frames" || a.starts_with("--frames="))
@@ -184,24 +187,33 @@ pub fn task_command(
         .num_threads(threads)
         .build()
         .map_err(|e| Error::internal(format!("cannot start {threads} threads: {e}")))?;
-    let memory = pool.install(|| crate::commands::execute(cli.command))?;
+    let mut dry = pool
+        .install(|| crate::commands::execute(cli.command))?
+        .expect("a frame-writing command's dry run says what it found");
+    // The job file and the other files the command names are read too.
+    dry.reads.extend(
+        task.files
+            .iter()
+            .filter(|&&(_, flow)| flow == Flow::In)
+            .map(|&(at, _)| PathBuf::from(&task.args[at])),
+    );
     let needs = Needs {
         threads,
-        memory: memory.expect("a frame-writing command's dry run gives its bound"),
+        memory: dry.memory,
         environment: std::env::vars()
             .filter(|(name, _)| name.starts_with("EXRCOMP_"))
             .collect(),
     };
-    Ok((task, needs))
+    Ok((task, needs, dry))
 }
 
 /// Writes the job `farm` asks for: the command checked over all its frames
 /// first, nothing written if it would fail.
 pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = farm;
-    let (task, needs) = task_command(&job.command, &job.frames, cwd, job.threads)?;
+    let (task, needs, dry) = task_command(&job.command, &job.frames, cwd, job.threads)?;
     let exrcomp = this_exrcomp()?;
-    match farm {
+    let files = match farm {
         Farm::Openjd(_) => {
             let tasks = Tasks::new(
                 &job.frames,
@@ -211,19 +223,34 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
             )?;
             let openjd =
                 openjd_template(&exrcomp, &task, &tasks, &needs, &description(job, &needs));
-            write_template(&beside(&job.output, "params.json"), &openjd.values)?;
-            write_template(&job.output, &openjd.template)
+            vec![
+                (beside(&job.output, "params.json"), openjd.values),
+                (job.output.clone(), openjd.template),
+            ]
         }
-        Farm::Opencue(_) => write_template(
-            &job.output,
-            &opencue_outline(&exrcomp, &task.args, job, &needs)?,
-        ),
+        Farm::Opencue(_) => vec![(
+            job.output.clone(),
+            opencue_outline(&exrcomp, &task.args, job, &needs)?,
+        )],
         Farm::Deadline(_) => {
             let files = deadline_job(&exrcomp, &task, job, &needs, &description(job, &needs))?;
-            write_template(&beside(&job.output, "plugin.job"), &files.plugin_info)?;
-            write_template(&job.output, &files.job_info)
+            vec![
+                (beside(&job.output, "plugin.job"), files.plugin_info),
+                (job.output.clone(), files.job_info),
+            ]
         }
-    }
+    };
+    // The job's files replace neither what it reads nor a frame it writes.
+    let written = || files.iter().map(|(path, _)| (None, path.clone()));
+    refuse_overwriting(dry.reads, written())?;
+    refuse_replacing(
+        dry.writes,
+        ("the frame", "a frame the job writes"),
+        written(),
+    )?;
+    files
+        .iter()
+        .try_for_each(|(path, text)| write_whole(path, text.as_bytes()))
 }
 
 /// What the job does and needs, for a render manager's view of it.
@@ -492,20 +519,6 @@ pub fn openjd_template(
 pub fn beside(job: &Path, suffix: &str) -> PathBuf {
     let stem = job.file_stem().unwrap_or_default().to_string_lossy();
     job.with_file_name(format!("{stem}.{suffix}"))
-}
-
-/// Writes `text` to `path` under a temporary name, renamed when complete.
-pub fn write_template(path: &Path, text: &str) -> Result<()> {
-    let temporary = crate::io::writer::temporary_path(path);
-    let folder = path.parent().filter(|d| !d.as_os_str().is_empty());
-    folder
-        .map_or(Ok(()), std::fs::create_dir_all)
-        .and_then(|()| std::fs::write(&temporary, text))
-        .and_then(|()| std::fs::rename(&temporary, path))
-        .map_err(|e| {
-            let _ = std::fs::remove_file(&temporary);
-            Error::output(path, None, format!("cannot write the template: {e}"))
-        })
 }
 
 /// Frames as one range and its step: OpenCue and Deadline cut a job's

@@ -33,6 +33,7 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
         return Vec::new();
     };
     let mut warnings = display_windows(job, texts, &headers);
+    warnings.extend(lossy_default(job, texts, &headers));
     let graph = &job.graph;
     // As a frame's plan does, display windows before data windows; one an
     // op refuses is the run's error, not a warning's.
@@ -76,6 +77,29 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
         }
     }
     warnings
+}
+
+/// A lossy compression (DWAA, B44...) kept from the header input because
+/// none was given: every channel is encoded again and loses a little more,
+/// those the job leaves alone too (a transcode included).
+fn lossy_default(job: &Job, texts: &[String], headers: &[Header]) -> Option<String> {
+    let HeaderBase::Input(kept) = job.header_base else {
+        return None;
+    };
+    let header = &headers[kept];
+    let lossy = header
+        .channels
+        .list
+        .iter()
+        .any(|c| !header.compression.is_lossless_for(c.sample_type));
+    (job.compression.is_none() && lossy).then(|| {
+        format!(
+            "{} has {}, which is lossy, and the output keeps it: every channel is \
+             encoded again and loses a little more, those the job leaves alone too (give \
+             --compression zip or piz to keep them exact)",
+            texts[kept], header.compression
+        )
+    })
 }
 
 /// An input whose display window is not the header input's: the output

@@ -34,6 +34,12 @@ const STRIP_BYTES: usize = 1 << 20;
 /// apart) comes near it; real frames take a few megabytes per block.
 pub const MAX_STRIP_BYTES: usize = 256 << 20;
 
+/// Most chunks an output may have. Its offset table, 8 bytes a chunk, is
+/// held in memory while it is written: 64 MiB at this limit, 8 million rows
+/// of ZIPS, 134 million of ZIP. A result that tall comes only of inputs far
+/// apart (or a damaged header), and would write gigabytes of nothing.
+pub const MAX_OUTPUT_CHUNKS: usize = 8 << 20;
+
 /// How the output's pixels are laid out in blocks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OutputBlocks {
@@ -362,7 +368,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     let displays = graph.display_windows(|i| header_of(i).shared_attributes.display_window);
     let (display, resized) = displays[graph.output()].clone().map_err(located)?;
     let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
-    let windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
+    let mut windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
+    // A result of black inputs alone (`--missing black` on its only input)
+    // is a transparent black frame shaped as their nearest frames are, as a
+    // missing frame is black over its format in Nuke, not a frame left out.
+    let black = |i: usize| matches!(sources.inputs[i], Source::Black(_));
+    if windows[graph.output()].size.area() == 0 && (0..inputs.len()).any(black) {
+        let shaped = |i: usize| match black(i) {
+            true => levels[i].window(header_of(i)),
+            false => read[i],
+        };
+        windows = graph.evaluate(shaped, |op, args| op.data_window(args));
+    }
     let window = windows[graph.output()];
     if window.size.area() == 0 {
         return Err(Error::new(
@@ -483,8 +500,12 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         None => window,
     };
     // Never write a file the reader would refuse, nor allocate for it. From
-    // inputs, a result far wider than any of them (inputs far apart) is an
+    // inputs, a result far wider or taller than any of them (inputs far apart) is an
     // input problem; a generated image asked that wide, a usage error.
+    let too_big = |message: String| match inputs.is_empty() {
+        true => Error::usage(format!("frame {frame}: {message}")),
+        false => located(message),
+    };
     let block_bytes = window
         .size
         .width()
@@ -496,10 +517,35 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
              {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
             window.size.width()
         );
-        return Err(match inputs.is_empty() {
-            true => Error::usage(format!("frame {frame}: {message}")),
-            false => located(message),
-        });
+        return Err(too_big(message));
+    }
+    // Tiles asked of a size whose blocks the reader would refuse.
+    if let BlockDescription::Tiles(tiles) = header.blocks {
+        let tile_bytes = tiles
+            .tile_size
+            .area()
+            .saturating_mul(header.channels.bytes_per_pixel);
+        if tile_bytes > MAX_BLOCK_BYTES {
+            return Err(Error::usage(format!(
+                "frame {frame}: tiles of {}x{} pixels would take {tile_bytes} bytes each, over \
+                 the {MAX_BLOCK_BYTES}-byte limit of a block: give a smaller --tile",
+                tiles.tile_size.width(),
+                tiles.tile_size.height()
+            )));
+        }
+    }
+    // Its offset table is held while it is written, 8 bytes a chunk: the
+    // one thing that grows with its height.
+    let chunks = output_grid(&header).blocks;
+    let chunks = chunks.x().saturating_mul(chunks.y());
+    if chunks > MAX_OUTPUT_CHUNKS {
+        let message = format!(
+            "the result's data window is {} x {} pixels: it would take {chunks} chunks, over the \
+             {MAX_OUTPUT_CHUNKS}-chunk limit",
+            window.size.width(),
+            window.size.height()
+        );
+        return Err(too_big(message));
     }
     let regions = Regions::new(graph, computed, &windows).map_err(located)?;
     if job.rows.is_some() && !regions.shared() {

@@ -35,21 +35,50 @@ pub fn refuse_overwriting(
     inputs: impl IntoIterator<Item = PathBuf>,
     outputs: impl IntoIterator<Item = (Option<i64>, PathBuf)>,
 ) -> Result<()> {
-    let inputs: HashMap<Identity, PathBuf> = inputs
-        .into_iter()
-        .map(|path| (identity(&path), path))
-        .collect();
+    refuse_replacing(inputs, ("the input", "an input"), outputs)
+}
+
+/// As `refuse_overwriting`, for files that are something else to the
+/// command, `what` naming one (a farm job's frames, which its template must
+/// not replace: `("the frame", "a frame the job writes")`).
+pub fn refuse_replacing(
+    files: impl IntoIterator<Item = PathBuf>,
+    what: (&str, &str),
+    outputs: impl IntoIterator<Item = (Option<i64>, PathBuf)>,
+) -> Result<()> {
+    let files = FileSet::new(files);
     for (frame, output) in outputs {
-        if let Some(input) = inputs.get(&identity(&output)) {
+        if let Some(file) = files.get(&output) {
             let frame = frame.map_or(String::new(), |f| format!(" (frame {f})"));
             return Err(Error::usage(format!(
-                "the output {}{frame} is the input {}: refusing to overwrite an input",
+                "the output {}{frame} is {} {}: refusing to overwrite {}",
                 output.display(),
-                input.display()
+                what.0,
+                file.display(),
+                what.1
             )));
         }
     }
     Ok(())
+}
+
+/// Files by identity: whether a path is one of them, however spelt.
+pub struct FileSet(HashMap<Identity, PathBuf>);
+
+impl FileSet {
+    pub fn new(paths: impl IntoIterator<Item = PathBuf>) -> Self {
+        FileSet(
+            paths
+                .into_iter()
+                .map(|path| (identity(&path), path))
+                .collect(),
+        )
+    }
+
+    /// The file of the set that `path` is, as the set spells it.
+    pub fn get(&self, path: &Path) -> Option<&PathBuf> {
+        self.0.get(&identity(path))
+    }
 }
 
 #[cfg(test)]

@@ -2,8 +2,6 @@
 //! stream from `deflate`, the chunks' CRC-32 from libdeflate, no filter
 //! (the sheet is small; filters would save bytes, not time).
 
-use std::path::Path;
-
 /// PNG's signature (RFC 2083, 3.1).
 const SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
 
@@ -39,15 +37,6 @@ pub fn encode(image: &Rgb8) -> Vec<u8> {
         file.extend_from_slice(&crc.to_be_bytes());
     }
     file
-}
-
-/// Writes `image` to `path` as PNG, under a temporary name renamed when
-/// complete (as EXR frames are).
-pub fn write(path: &Path, image: &Rgb8) -> std::io::Result<()> {
-    let name = path.file_name().unwrap_or_default().to_string_lossy();
-    let temporary = path.with_file_name(format!(".{name}.tmp"));
-    std::fs::write(&temporary, encode(image))?;
-    std::fs::rename(&temporary, path)
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@
 //! and `keyCode` with all seven of its fields (the crate writes six, and
 //! OpenEXR then refuses the file).
 
+use super::overwrite::FileSet;
 use super::reader::ExrFile;
 use crate::error::{Error, Result};
 use exr::block::chunk::Chunk;
@@ -33,10 +34,41 @@ pub fn temporary_path(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.exrcomp-{}.tmp", std::process::id()))
 }
 
+/// Writes a small file whole (a farm job, a bench record, a PNG) under its
+/// temporary name, renamed into place when complete, its folder created:
+/// as frames are, an output path never holds a partial file.
+pub fn write_whole(path: &Path, bytes: &[u8]) -> Result<()> {
+    let temporary = temporary_path(path);
+    let folder = path.parent().filter(|d| !d.as_os_str().is_empty());
+    folder
+        .map_or(Ok(()), fs::create_dir_all)
+        .and_then(|()| create_locked(&temporary))
+        .and_then(|mut file| {
+            file.write_all(bytes)?;
+            fs::rename(&temporary, path)
+        })
+        .map_err(|e| {
+            let _ = fs::remove_file(&temporary);
+            Error::output(path, None, format!("cannot write: {e}"))
+        })
+}
+
+/// Creates the temporary file `path` and holds an exclusive lock on it
+/// while it is open, which tells every other exrcomp (another host's, over
+/// NFS, or another PID namespace's, where the name's PID says nothing) that
+/// it is being written.
+fn create_locked(path: &Path) -> std::io::Result<File> {
+    let file = File::create(path)?;
+    file.try_lock().map_err(std::io::Error::from)?;
+    Ok(file)
+}
+
 /// Removes temporary files in `dir` left by exrcomp runs that no longer exist
-/// (killed with SIGKILL, or a machine that lost power). A file of a process
-/// that is still running, another exrcomp writing there, is left alone.
-pub fn remove_stale_temporaries(dir: &Path) {
+/// (killed with SIGKILL, or a machine that lost power): a file whose PID
+/// runs no process here and whose lock (`create_locked`) nobody holds. A
+/// file of a live writer, here or on another host, is left alone, and so
+/// is any of the run's `inputs`, whatever its name.
+pub fn remove_stale_temporaries(dir: &Path, inputs: &FileSet) {
     let dir = if dir.as_os_str().is_empty() {
         Path::new(".")
     } else {
@@ -52,9 +84,17 @@ pub fn remove_stale_temporaries(dir: &Path) {
             .and_then(|n| n.strip_suffix(".tmp"))
             .and_then(|n| n.rsplit_once(".exrcomp-"))
             .and_then(|(_, pid)| pid.parse::<u32>().ok());
-        if let Some(pid) = pid {
-            if !Path::new(&format!("/proc/{pid}")).exists() {
-                let _ = fs::remove_file(entry.path());
+        let Some(pid) = pid else {
+            continue;
+        };
+        let path = entry.path();
+        if Path::new(&format!("/proc/{pid}")).exists() || inputs.get(&path).is_some() {
+            continue;
+        }
+        // Unlocked: its writer is gone (a lock is held until the rename).
+        if let Ok(file) = File::open(&path) {
+            if file.try_lock().is_ok() {
+                let _ = fs::remove_file(&path);
             }
         }
     }
@@ -95,7 +135,7 @@ pub fn write_file(
     }
     let temporary = temporary_path(path);
     let result = (|| {
-        let file = File::create(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
+        let file = create_locked(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
         let mut out = Counting {
             inner: BufWriter::with_capacity(1 << 20, file),
             position: 0,

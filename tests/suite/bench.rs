@@ -149,6 +149,47 @@ fn a_record_holds_the_runs_the_machine_and_leaves_no_output() {
     assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
 }
 
+/// The record never replaces a file the timed job reads (its frames, its
+/// job file), and is refused before any run.
+#[test]
+fn a_record_never_replaces_what_the_job_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate(&d.join("bg.####.exr"), "bg", (32, 16), &["--frames", "1-2"]);
+    std::fs::write(
+        d.join("shot.toml"),
+        "[[node]]\nname = \"a\"\nread = \"bg.####.exr\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"c.####.exr\"\ninputs = [\"a\"]\n",
+    )
+    .unwrap();
+    let transcode = ["transcode", "bg.####.exr", "-o", "t.####.exr"];
+    // (A chart is FILE.svg or FILE.png, which no job reads.)
+    for (file, job) in [
+        ("bg.0002.exr", &transcode[..]),
+        ("./bg.0001.exr", &transcode[..]),
+        ("shot.toml", &["shot.toml"][..]),
+        ("bg.0001.exr", &["shot.toml"][..]),
+    ] {
+        let before = std::fs::read(d.join(file)).unwrap();
+        let out = bench(
+            d,
+            &[&["--runs", "1", "--json", file, "--"][..], job].concat(),
+            None,
+        );
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "--json {file}: {message}");
+        assert!(
+            message.contains("refusing to overwrite an input"),
+            "{message}"
+        );
+        assert!(!message.contains("runs after"), "refused before the runs");
+        assert!(
+            std::fs::read(d.join(file)).unwrap() == before,
+            "--json {file}"
+        );
+    }
+}
+
 #[test]
 fn a_planted_delay_is_a_regression_and_a_faster_run_is_not() {
     let dir = tempfile::tempdir().unwrap();

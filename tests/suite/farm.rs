@@ -478,6 +478,65 @@ fn no_template_is_written_for_a_command_that_would_fail() {
     assert!(!d.join("c.0001.exr").exists());
 }
 
+/// A job's own files (the template, the file beside it) never replace what
+/// the job reads, its job file included, nor a frame it writes.
+#[test]
+fn a_template_never_replaces_an_input_the_job_file_or_a_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    std::fs::write(
+        d.join("shot.toml"),
+        "[[node]]\nname = \"a\"\nread = \"fg.####.exr\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"c.####.exr\"\ninputs = [\"a\"]\n",
+    )
+    .unwrap();
+    std::fs::write(d.join("c.0003.exr"), "a frame rendered earlier").unwrap();
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    for (farm, output, command, words) in [
+        ("openjd", "fg.0002.exr", &over[..], "is the input"),
+        ("deadline", "bg.0007.exr", &over[..], "is the input"),
+        ("opencue", "./fg.0001.exr", &over[..], "is the input"),
+        ("openjd", "shot.toml", &["run", "shot.toml"], "is the input"),
+        ("openjd", "c.0003.exr", &over[..], "is the frame"),
+        ("deadline", "c.0004.exr", &over[..], "is the frame"),
+    ] {
+        let before: Vec<_> = [
+            "fg.0002.exr",
+            "bg.0007.exr",
+            "fg.0001.exr",
+            "shot.toml",
+            "c.0003.exr",
+        ]
+        .iter()
+        .map(|f| std::fs::read(d.join(f)).unwrap())
+        .collect();
+        let out = exrcomp()
+            .args(["farm", farm, "--frames", "1-7", "-o", output, "--"])
+            .args(command)
+            .current_dir(d)
+            .output()
+            .unwrap();
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{farm} {output}: {message}");
+        assert!(
+            message.contains(words) && message.contains("refusing to overwrite"),
+            "{farm} {output}: {message}"
+        );
+        let after: Vec<_> = [
+            "fg.0002.exr",
+            "bg.0007.exr",
+            "fg.0001.exr",
+            "shot.toml",
+            "c.0003.exr",
+        ]
+        .iter()
+        .map(|f| std::fs::read(d.join(f)).unwrap())
+        .collect();
+        assert!(before == after, "{farm} -o {output} changed a file");
+    }
+}
+
 /// Options given to the command in any spelling reach every task once, with
 /// file names made absolute by parsing; chunks are range expressions, and
 /// more tasks than OpenJD lists go to the scheduler's own chunking.

@@ -350,6 +350,36 @@ fn warnings_say_what_was_assumed_once_a_run_and_quiet_silences_them() {
         "exrcomp: warning: the clean plate {} (96x48 at 0, 0) is not the size and place of the footage {} (64x48 at 0, 0)",
         s(&p("bg")), s(&p("fg"))
     )), "{matte}");
+    // A lossy compression kept by default, not one asked for.
+    ok(&[
+        "transcode",
+        s(&p("plate")),
+        "-o",
+        s(&p("dwa")),
+        "--compression",
+        "dwaa",
+        "-q",
+    ]);
+    let lossy = ok(&["grade", s(&p("dwa")), "-o", s(&p("g")), "--gain", "2"]);
+    assert_eq!(
+        lossy
+            .matches(&format!(
+                "exrcomp: warning: {} has dwaa compression, which is lossy, and the output keeps it",
+                s(&p("dwa"))
+            ))
+            .count(),
+        1,
+        "{lossy}"
+    );
+    let asked = ok(&[
+        "grade",
+        s(&p("dwa")),
+        "-o",
+        s(&p("g2")),
+        "--compression",
+        "dwaa",
+    ]);
+    assert!(!asked.contains("warning"), "{asked}");
     let quiet = run(&["over", s(&p("rgb")), s(&p("bg")), "-o", s(&p("q")), "-q"]);
     assert!(
         quiet.status.success() && stderr(&quiet).is_empty(),

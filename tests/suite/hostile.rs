@@ -310,6 +310,29 @@ fn inputs_so_far_apart_that_the_result_could_not_be_read_back_are_refused() {
     assert!(!out.exists());
 }
 
+/// Two tiny inputs a billion rows apart: a result whose offset table alone
+/// would take half a gigabyte, gigabytes of nothing written, is refused at
+/// once, nothing left in the output folder.
+#[test]
+fn inputs_so_far_apart_vertically_that_the_result_is_absurdly_tall_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("near.exr"), dir.path().join("far.exr"));
+    let near = random_rgba(1, 0, 0, 8, 4, Kind::Half, false);
+    let far = random_rgba(2, 0, 1_073_741_000, 8, 4, Kind::Half, false);
+    for (path, img) in [(&a, &near), (&b, &far)] {
+        write_image(
+            path,
+            img,
+            compression("zip"),
+            exr::prelude::LineOrder::Increasing,
+        );
+    }
+    let out_path = dir.path().join("out");
+    std::fs::create_dir(&out_path).unwrap();
+    let out = limited(&["over", s(&b), s(&a), "-o", s(&out_path.join("o.exr")), "-q"]);
+    assert_refused(&out, ["far.exr", "chunk limit"], &out_path);
+}
+
 #[test]
 fn a_result_too_wide_to_hold_a_strip_of_is_refused_before_allocating() {
     // Two small, valid images 200 million pixels apart: their union is

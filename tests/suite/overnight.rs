@@ -84,6 +84,39 @@ fn missing_frames_skip_hold_or_black() {
     assert!(stderr(&out).contains("missing frame 3"), "{}", stderr(&out));
 }
 
+/// A frame made black from a job's only input is a transparent black frame
+/// shaped as the nearest frame on disk, not a failure, in a dry run too.
+#[test]
+fn missing_black_on_the_only_input_writes_a_transparent_black_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", [1, 3], 0);
+    let input = d.join("fg.####.exr");
+    let grade = |out: &str, more: &[&str]| {
+        let out = d.join(out);
+        let mut args = vec!["grade", s(&input), "-o", s(&out), "--gain", "2"];
+        args.extend(["--missing", "black", "-q"]);
+        args.extend(more);
+        run(&args)
+    };
+    let dry = grade("dry/g.####.exr", &["--dry-run"]);
+    assert!(dry.status.success(), "{}", stderr(&dry));
+    let out = grade("g/g.####.exr", &[]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let black = read_image(&frame_path(&d.join("g"), "g", 2));
+    let near = read_image(&frame_path(d, "fg", 1));
+    assert_eq!(
+        (black.width, black.height, black.x, black.y),
+        (near.width, near.height, near.x, near.y)
+    );
+    let n = black.width * black.height;
+    assert!(black
+        .channels
+        .values()
+        .all(|c| (0..n).all(|i| c.get_f32(i) == 0.0)));
+    assert!(frame_path(&d.join("g"), "g", 3).exists());
+}
+
 #[test]
 fn keep_going_reports_bad_frames_and_writes_the_rest() {
     let dir = tempfile::tempdir().unwrap();
@@ -241,6 +274,13 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
     let live = d.join(format!("o/.t.0002.exr.exrcomp-{}.tmp", std::process::id()));
     std::fs::write(&stale, "left by a killed run").unwrap();
     std::fs::write(&live, "being written by a live process").unwrap();
+    // One a live writer elsewhere holds (another host's, or another PID
+    // namespace's: its PID names no process here), locked as exrcomp locks
+    // what it writes.
+    let elsewhere = d.join("o/.t.0003.exr.exrcomp-4194306.tmp");
+    std::fs::write(&elsewhere, "being written on another host").unwrap();
+    let held = std::fs::File::open(&elsewhere).unwrap();
+    held.try_lock().unwrap();
     let resumed = run(&[
         "transcode",
         s(&d.join("in.####.exr")),
@@ -253,14 +293,20 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
     ]);
     assert!(resumed.status.success(), "{}", stderr(&resumed));
     assert!(
-        !stale.exists() && live.exists(),
+        !stale.exists() && live.exists() && elsewhere.exists(),
         "stale temporaries go, live ones stay"
     );
+    drop(held);
     for frame in 1..=30 {
         let a = std::fs::read(frame_path(&d.join("o"), "t", frame)).unwrap();
         let b = std::fs::read(frame_path(&d.join("ref"), "t", frame)).unwrap();
         assert!(a == b, "frame {frame} differs from the uninterrupted run");
     }
+    // An input named as a temporary is read, never removed.
+    let odd = d.join("o/.in.exr.exrcomp-4194307.tmp");
+    std::fs::copy(frame_path(&d.join("o"), "t", 1), &odd).unwrap();
+    ok(&["transcode", s(&odd), "-o", s(&d.join("o/odd.exr")), "-q"]);
+    assert!(odd.exists(), "an input named as a temporary was removed");
 }
 
 #[test]

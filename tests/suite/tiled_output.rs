@@ -287,6 +287,18 @@ fn bad_tile_sizes_are_usage_errors() {
         assert_eq!(result.status.code(), Some(2), "--tile {tile}");
         assert!(stderr(&result).contains("tile size"), "{}", stderr(&result));
     }
+    // Tiles whose blocks no reader takes (ours refuses blocks over 512 MiB,
+    // OpenEXR tiles over 2 GiB): 8193 x 8193 half RGBA is 537 MB.
+    for tile in ["8193", "16384x16384"] {
+        let result = run(&["transcode", s(&input), "-o", s(&out), "--tile", tile]);
+        assert_eq!(result.status.code(), Some(2), "--tile {tile}");
+        assert!(
+            stderr(&result).contains("give a smaller --tile"),
+            "{}",
+            stderr(&result)
+        );
+        assert!(!out.exists());
+    }
     // Bands are scanline blocks for `stitch`: not with tiles.
     let result = run(&[
         "transcode",
