@@ -262,6 +262,12 @@ impl Op for Crop {
         inputs[0].to_vec()
     }
 
+    /// A crop or pad: the input's pixels where it has data. Not a cut or a
+    /// placement, which move them (and read regions of their own).
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+        (!self.cut).then(|| (0..inputs[0].len()).collect())
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let (dx, dy) = self.shift();
