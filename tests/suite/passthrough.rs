@@ -367,3 +367,26 @@ fn a_merge_over_a_crop_passes_only_where_the_crop_keeps_the_pixels() {
         assert_eq!(copied(&out, &b, 0), expected, "crop {region}");
     }
 }
+
+#[test]
+fn a_rename_after_a_merge_still_passes_the_backgrounds_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = sparse(14, 20..35);
+    write(d, "a.exr", &a);
+    let img = random_rgba(15, 0, 0, WIDTH, HEIGHT, Kind::Half, false);
+    let b = write(d, "b.exr", &img);
+    let job = d.join("job.toml");
+    let text = job_file(&["a", "b"]).replace(
+        "inputs = [\"comp\"]",
+        "inputs = [\"renamed\"]",
+    ) + "\n[[node]]\nname = \"renamed\"\nop = \"shuffle\"\nch = \"A,B,G,Y=R\"\ninputs = [\"comp\"]\n";
+    std::fs::write(&job, text).unwrap();
+    check_run(&["run", s(&job)]);
+    let out = d.join("out.exr");
+    let mut expected = reference_merge("over", &a, &img, false, 1.0, &[""]);
+    let red = expected.channels.remove("R").unwrap();
+    expected.channels.insert("Y".into(), red);
+    assert_identical(&read_image(&out), &expected);
+    assert_eq!(copied(&out, &b, 0), [true, false, false, true, true]);
+}
