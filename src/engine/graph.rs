@@ -67,6 +67,15 @@ pub trait Op: Send + Sync {
         false
     }
 
+    /// For an op whose result is its one input's samples as they are, in
+    /// the same pixels, wherever both data windows hold them (a crop, a pad,
+    /// a channel rename or drop): per output channel, the input channel it
+    /// carries. What lets an output block be a chunk of the input below it
+    /// (`passthrough.rs`); `None` for every other op.
+    fn carries(&self, _inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+        None
+    }
+
     /// Whether rows `rows` of `first` are transparent black all along, as
     /// this op sees them (given the second input's channels). Asked only of
     /// ops that pass the second input.

@@ -27,6 +27,9 @@ pub struct PassThrough {
     /// input reads, and its second input's node. All first inputs must be
     /// transparent black over a block for it to pass.
     tests: Vec<(usize, usize, usize)>,
+    /// The rows where every node from the output down to the source holds
+    /// the source's pixels (inside each crop's window).
+    rows: Range<i32>,
 }
 
 /// An output block made of an input's chunk.
@@ -42,34 +45,70 @@ struct PassedBlock {
 impl PassThrough {
     /// Whether `plan`'s output can take chunks from an input, and which.
     pub fn find(graph: &Graph, plan: &FramePlan) -> Option<Self> {
-        // Inputs behind a resize stream in rows of their own.
+        // Inputs behind a resize (or a cut) stream in rows of their own.
         if !plan.regions.shared() {
             return None;
         }
+        let (out, window) = (&plan.header, plan.window());
+        // Per output channel as written, the channel of the node reached
+        // whose samples it is.
+        let output = graph.output();
+        let mut map: Vec<usize> = out
+            .channels
+            .list
+            .iter()
+            .map(|c| plan.channels[output].iter().position(|o| o.name == c.name))
+            .collect::<Option<_>>()?;
         let mut tests = Vec::new();
-        let mut node = graph.output();
+        // The rows every node on the way down holds the source's pixels in.
+        let (mut top, mut bottom) = (window.position.y(), window.end().y());
+        let mut node = output;
         let source = loop {
+            let w = plan.windows[node];
+            if (w.position.x(), w.size.width()) != (window.position.x(), window.size.width()) {
+                return None;
+            }
+            (top, bottom) = (top.max(w.position.y()), bottom.min(w.end().y()));
             match &graph.nodes[node] {
-                Node::Input(i) if !tests.is_empty() => break *i,
+                Node::Input(i) if node != output => break *i,
                 Node::Op { op, inputs, .. } if op.passes_second() && inputs.len() == 2 => {
                     let Node::Input(first) = graph.nodes[inputs[0]] else {
                         return None;
                     };
+                    // Each channel the merge's, from its second input.
+                    let (merged, second) = (&plan.channels[node], &plan.channels[inputs[1]]);
+                    map = map
+                        .iter()
+                        .map(|&k| second.iter().position(|c| *c == merged[k]))
+                        .collect::<Option<_>>()?;
                     tests.push((node, first, inputs[1]));
                     node = inputs[1];
+                }
+                Node::Op { op, inputs, .. } if inputs.len() == 1 => {
+                    let carried = op.carries(&[&plan.channels[inputs[0]]])?;
+                    map = map.iter().map(|&k| carried[k]).collect();
+                    node = inputs[0];
                 }
                 _ => return None,
             }
         };
         let source_header = plan.header_of(source);
-        let (out, window) = (&plan.header, plan.window());
         let input = source_header.data_window();
         let grid = output_grid(out);
         let lines = grid.block.y() as i32;
+        // The chunks' samples, channel after channel, must be the output's
+        // blocks': the same channels in order (names aside), none dropped.
+        let list = &source_header.channels.list;
+        let laid_out = map.iter().copied().eq(0..list.len())
+            && out.channels.list.iter().zip(list.iter()).all(|(o, i)| {
+                (o.sample_type, o.sampling, o.quantize_linearly)
+                    == (i.sample_type, i.sampling, i.quantize_linearly)
+            });
         // The source is decoded after the inputs tested, so it is not one.
         // Its blocks must be the output's: scanline blocks of the same
         // columns, or tiles of the same size (of level 0, as written).
-        let same = tests.iter().all(|&(_, first, _)| first != source)
+        let same = laid_out
+            && tests.iter().all(|&(_, first, _)| first != source)
             && plan.deep[source].is_none()
             && source_header.blocks.has_tiles() == out.blocks.has_tiles()
             && plan.levels[source].block == grid.block
@@ -77,11 +116,12 @@ impl PassThrough {
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
             && source_header.compression == out.compression
-            && source_header.channels.list == out.channels.list
-            && (input.position.x(), input.size.width())
-                == (window.position.x(), window.size.width())
             && (input.position.y() - window.position.y()) % lines == 0;
-        same.then_some(PassThrough { source, tests })
+        same.then_some(PassThrough {
+            source,
+            tests,
+            rows: top..bottom,
+        })
     }
 
     /// Decodes strip `rows` of every input but the source's chunks of the
@@ -119,6 +159,7 @@ impl PassThrough {
     ) -> Vec<PassedBlock> {
         let window = plan.window();
         let input = plan.header_of(self.source).data_window();
+        let (inside, end) = (&self.rows, input.end().y());
         let (grid, source) = (output_grid(&plan.header), plan.levels[self.source]);
         let lines = grid.block.y() as i32;
         let (top, bottom) = (window.position.y(), window.end().y());
@@ -127,10 +168,10 @@ impl PassThrough {
         let mut passed = Vec::new();
         for y0 in (first..rows.end.min(bottom)).step_by(lines as usize) {
             let y1 = (y0 + lines).min(bottom);
-            // The input's chunk must hold exactly these rows.
-            let inside = y0 >= input.position.y() && y1 <= input.end().y();
-            let same_end = (y0 + lines).min(input.end().y()) == y1;
-            if y1 > rows.end || !inside || !same_end {
+            // The input's chunk must hold exactly these rows, every node
+            // the source's pixels.
+            let same_end = (y0 + lines).min(end) == y1;
+            if y1 > rows.end || y0 < inside.start || y1 > inside.end || !same_end {
                 continue;
             }
             let (row, source_row) = ((y0 - top) / lines, (y0 - input.position.y()) / lines);

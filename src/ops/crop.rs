@@ -262,13 +262,27 @@ impl Op for Crop {
         inputs[0].to_vec()
     }
 
+    /// A crop or pad: the input's pixels where it has data. Not a cut or a
+    /// placement, which move them (and read regions of their own).
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+        (!self.cut).then(|| (0..inputs[0].len()).collect())
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let (dx, dy) = self.shift();
         if !self.cut {
-            // The same rows and columns: black outside the input's data.
-            for y in out.y..out.end() {
-                out.copy_row_from(input, y);
+            // The same rows and columns, inside the crop's window only (a
+            // merge it feeds computes rows and columns beyond it): black
+            // outside the input's data.
+            let columns = out.valid_columns();
+            for y in out.valid_rows() {
+                let (to, from) = (out.row_range(y).start, input.row_range(y).start);
+                for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
+                    plane
+                        .bytes_mut(to + columns.start..to + columns.end)
+                        .copy_from_slice(source.bytes(from + columns.start..from + columns.end));
+                }
             }
             return Ok(());
         }

@@ -291,6 +291,19 @@ impl Op for Shuffle {
         self.resolve(inputs).map(drop)
     }
 
+    /// `shuffle` without constants; never `copy`, whose blocks hold A's
+    /// channels, which B's chunks lack.
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+        if self.into {
+            return None;
+        }
+        let outputs = self.resolve(inputs).ok()?;
+        outputs
+            .iter()
+            .map(|o| o.source.ok().map(|(_, i)| i))
+            .collect()
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let lists: Vec<&[ChannelDescription]> =
             inputs.iter().map(|r| r.channels.as_slice()).collect();

@@ -157,3 +157,35 @@ fn crop_and_pad_job_nodes_and_bad_regions() {
         assert!(!out.exists());
     }
 }
+
+#[test]
+fn a_crop_under_a_merge_is_black_outside_its_window() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (path, img) = input(d);
+    // A transparent element wider and taller than the crop: the merge's
+    // window is the element's, the crop's pixels only inside its region.
+    let mut clear = random_rgba(12, 0, 0, 60, 50, Kind::Half, false);
+    clear
+        .channels
+        .values_mut()
+        .for_each(|s| *s = s.zeros_like(60 * 50));
+    let a = d.join("a.exr");
+    write_image(&a, &clear, compression("zip"), LineOrder::Increasing);
+    let job = d.join("job.toml");
+    let text = format!(
+        "[[node]]\nname = \"a\"\nread = \"{}\"\n\n[[node]]\nname = \"b\"\nread = \"{}\"\n\n\
+         [[node]]\nname = \"cropped\"\nop = \"crop\"\nregion = \"20x10+5+7\"\ninputs = [\"b\"]\n\n\
+         [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"cropped\"]\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"comp\"]\ncompression = \"piz\"\n",
+        s(&a),
+        s(&path),
+        s(&d.join("out.exr"))
+    );
+    std::fs::write(&job, text).unwrap();
+    let ran = run(&["run", s(&job), "--quiet"]);
+    assert!(ran.status.success(), "{}", stderr(&ran));
+    let cropped = reference(&img, (5, 7, 20, 10), (0, 0), img.display);
+    let expected = reference_merge("over", &clear, &cropped, false, 1.0, &[""]);
+    assert_identical(&read_image(&d.join("out.exr")), &expected);
+}

@@ -179,3 +179,214 @@ fn one_input_on_both_sides_of_a_merge_is_composited_not_passed() {
     let reference = reference_merge("over", &img, &img, false, 1.0, &[""]);
     assert_identical(&read_image(&d.join("out.exr")), &reference);
 }
+
+/// Per chunk `k` of `out`, whether its bytes are chunk `k + shift` of
+/// `input`.
+fn copied(out: &Path, input: &Path, shift: isize) -> Vec<bool> {
+    let theirs = chunks(input);
+    chunks(out)
+        .iter()
+        .enumerate()
+        .map(|(k, o)| theirs.get(k.wrapping_add_signed(shift)) == Some(o))
+        .collect()
+}
+
+/// `oiiotool IN ARGS -o THEIRS` and `idiff -fail 0` against `ours`, when
+/// both peers are there.
+fn same_as_oiiotool(input: &Path, args: &[&str], ours: &Path) {
+    let (Some(oiiotool), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {
+        return;
+    };
+    let theirs = ours.with_extension("oiio.exr");
+    let status = std::process::Command::new(oiiotool)
+        .arg(input)
+        .args(args)
+        .arg("-o")
+        .arg(&theirs)
+        .status()
+        .unwrap();
+    assert!(status.success(), "oiiotool {args:?}");
+    assert_idiff_identical(&idiff, ours, &theirs);
+}
+
+#[test]
+fn a_rename_that_keeps_the_channel_order_copies_every_chunk() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let img = random_rgba(10, 0, 0, WIDTH, HEIGHT, Kind::Half, false);
+    let b = write(d, "b.exr", &img);
+    let out = d.join("out.exr");
+    let renamed = |from: &str, to: &str| {
+        let mut expected = img.clone();
+        let samples = expected.channels.remove(from).unwrap();
+        expected.channels.insert(to.to_string(), samples);
+        expected
+    };
+    // (--ch, the pixels, whether the chunks are B's): a reorder and a
+    // rename that keep the sorted order copy; a rename that moves a channel
+    // in the list, or a drop, changes the block's layout and is encoded.
+    let mut dropped = img.clone();
+    dropped.channels.remove("A");
+    for (ch, expected, copies) in [
+        ("R,G,B,A", img.clone(), true),
+        ("A,B,G,Y=R", renamed("R", "Y"), true),
+        ("A,AA=R,B,G", renamed("R", "AA"), false),
+        ("R,G,B", dropped, false),
+    ] {
+        check_run(&["shuffle", s(&b), "-o", s(&out), "--ch", ch]);
+        assert_identical(&read_image(&out), &expected);
+        assert_eq!(copied(&out, &b, 0), [copies; 5], "--ch {ch}");
+        assert_peers_read(&out);
+        same_as_oiiotool(&b, &["--ch", ch], &out);
+    }
+}
+
+/// A window change: the command, its arguments, oiiotool's, the input's
+/// chunk at the output's first (counted from it), and which output chunks
+/// are the input's bytes.
+type Case = (
+    &'static str,
+    &'static [&'static str],
+    &'static [&'static str],
+    isize,
+    &'static [bool],
+);
+
+#[test]
+fn crops_and_pads_on_the_block_grid_copy_the_chunks_they_keep_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // Chunks of 16 rows: 0..16, 16..32, 32..48, 48..64, 64..70.
+    let b = write(
+        d,
+        "b.exr",
+        &random_rgba(11, 0, 0, WIDTH, HEIGHT, Kind::Half, true),
+    );
+    let (out, encoded) = (d.join("out.exr"), d.join("encoded.exr"));
+    let cases: [Case; 6] = [
+        // Rows on the grid: 16..48; 16..56 (its last block cut short).
+        (
+            "crop",
+            &["--region", "40x32+0+16"],
+            &["--crop", "40x32+0+16"],
+            1,
+            &[true; 2],
+        ),
+        (
+            "crop",
+            &["--region", "40x40+0+16"],
+            &["--crop", "40x40+0+16"],
+            1,
+            &[true, true, false],
+        ),
+        // Off the grid, or other columns: nothing is copied.
+        (
+            "crop",
+            &["--region", "40x32+0+8"],
+            &["--crop", "40x32+0+8"],
+            0,
+            &[false; 2],
+        ),
+        (
+            "crop",
+            &["--region", "39x32+1+16"],
+            &["--crop", "39x32+1+16"],
+            1,
+            &[false; 2],
+        ),
+        // The display window alone.
+        (
+            "crop",
+            &["--region", "40x70+0+0", "--display"],
+            &["--crop", "40x70+0+0", "--fullsize", "40x70+0+0"],
+            0,
+            &[true; 5],
+        ),
+        // Overscan of 16 rows above and below: rows -16..86, the input's
+        // whole blocks copied, its short last one (6 rows in a block of 16)
+        // and the black ones encoded.
+        (
+            "pad",
+            &["--by", "0,16,0,16"],
+            &["--crop", "40x102+0-16"],
+            -1,
+            &[false, true, true, true, true, false, false],
+        ),
+    ];
+    for (command, args, theirs, first, expected) in cases {
+        let mut all = vec![command, s(&b), "-o", s(&out)];
+        all.extend(args);
+        check_run(&all);
+        // The pixels as the op computes them where nothing is copied.
+        all[3] = s(&encoded);
+        all.extend(["--compression", "piz"]);
+        check_run(&all);
+        assert_identical(&read_image(&out), &read_image(&encoded));
+        let got = copied(&out, &b, first);
+        assert_eq!(got, expected, "{command} {args:?}");
+        assert_peers_read(&out);
+        same_as_oiiotool(&b, theirs, &out);
+    }
+}
+
+#[test]
+fn a_merge_over_a_crop_passes_only_where_the_crop_keeps_the_pixels() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = sparse(12, 20..35);
+    write(d, "a.exr", &a);
+    let b = write(
+        d,
+        "b.exr",
+        &random_rgba(13, 0, 0, WIDTH, HEIGHT, Kind::Half, true),
+    );
+    for (region, expected) in [
+        // Rows 16..70: the blocks without the element (visible in rows
+        // 20..35) and inside the crop pass.
+        ("40x54+0+16", [false, false, false, true, true]),
+        // Columns 0..30: the merge's window is A's 40, the crop's black
+        // beside B's pixels: nothing passes.
+        ("30x70+0+0", [false; 5]),
+    ] {
+        let job = d.join("job.toml");
+        let text = format!(
+            "[[node]]\nname = \"a\"\nread = \"a.exr\"\n\n\
+             [[node]]\nname = \"b\"\nread = \"b.exr\"\n\n\
+             [[node]]\nname = \"cropped\"\nop = \"crop\"\nregion = \"{region}\"\n\
+             inputs = [\"b\"]\n\n\
+             [[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"a\", \"cropped\"]\n\n\
+             [[node]]\nname = \"out\"\nwrite = \"out.exr\"\ninputs = [\"comp\"]\n"
+        );
+        std::fs::write(&job, text).unwrap();
+        check_run(&["run", s(&job)]);
+        let cropped = d.join("cropped.exr");
+        check_run(&["crop", s(&b), "-o", s(&cropped), "--region", region]);
+        let reference = reference_merge("over", &a, &read_image(&cropped), false, 1.0, &[""]);
+        let out = d.join("out.exr");
+        assert_identical(&read_image(&out), &reference);
+        assert_eq!(copied(&out, &b, 0), expected, "crop {region}");
+    }
+}
+
+#[test]
+fn a_rename_after_a_merge_still_passes_the_backgrounds_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let a = sparse(14, 20..35);
+    write(d, "a.exr", &a);
+    let img = random_rgba(15, 0, 0, WIDTH, HEIGHT, Kind::Half, false);
+    let b = write(d, "b.exr", &img);
+    let job = d.join("job.toml");
+    let text = job_file(&["a", "b"]).replace(
+        "inputs = [\"comp\"]",
+        "inputs = [\"renamed\"]",
+    ) + "\n[[node]]\nname = \"renamed\"\nop = \"shuffle\"\nch = \"A,B,G,Y=R\"\ninputs = [\"comp\"]\n";
+    std::fs::write(&job, text).unwrap();
+    check_run(&["run", s(&job)]);
+    let out = d.join("out.exr");
+    let mut expected = reference_merge("over", &a, &img, false, 1.0, &[""]);
+    let red = expected.channels.remove("R").unwrap();
+    expected.channels.insert("Y".into(), red);
+    assert_identical(&read_image(&out), &expected);
+    assert_eq!(copied(&out, &b, 0), [true, false, false, true, true]);
+}
