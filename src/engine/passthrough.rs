@@ -165,14 +165,19 @@ impl PassThrough {
         let (top, bottom) = (window.position.y(), window.end().y());
         let first = rows.start.max(top);
         let first = top + (first - top + lines - 1) / lines * lines;
-        let mut passed = Vec::new();
-        for y0 in (first..rows.end.min(bottom)).step_by(lines as usize) {
+        // Each row of blocks is tested on the pool: the foreground's scan is
+        // most of what decides, and no business of the decode thread's.
+        let starts: Vec<i32> = (first..rows.end.min(bottom))
+            .step_by(lines as usize)
+            .collect();
+        let row_of_blocks = |y0: i32| {
+            let mut passed = Vec::new();
             let y1 = (y0 + lines).min(bottom);
             // The input's chunk must hold exactly these rows, every node
             // the source's pixels.
             let same_end = (y0 + lines).min(end) == y1;
             if y1 > rows.end || y0 < inside.start || y1 > inside.end || !same_end {
-                continue;
+                return passed;
             }
             let (row, source_row) = ((y0 - top) / lines, (y0 - input.position.y()) / lines);
             // Whether every merge's first input hides nothing over the
@@ -208,8 +213,12 @@ impl PassThrough {
                     });
                 }
             }
-        }
-        passed
+            passed
+        };
+        starts
+            .into_par_iter()
+            .flat_map_iter(stage_time::tasks(Stage::Decode, row_of_blocks))
+            .collect()
     }
 
     /// The source's chunks for `blocks`, each checked to decompress, as
