@@ -399,14 +399,13 @@ pub struct RunArgs {
         value_name = "TEXT"
     )]
     pub burn_in: Option<String>,
-    /// The burn-in's corner.
+    /// The burn-in's corner (default bottom-left).
     #[arg(
         help_heading = "Review media (.png, .jpg, .tif outputs)",
         long,
-        value_enum,
-        default_value = "bottom-left"
+        value_enum
     )]
-    pub burn_in_corner: crate::io::burn_in::Corner,
+    pub burn_in_corner: Option<crate::io::burn_in::Corner>,
     /// Skip frames whose output already exists and decodes completely.
     #[arg(help_heading = "Run control", long)]
     pub resume: bool,

@@ -70,6 +70,11 @@ pub fn execute(command: Command) -> Result<Option<u64>> {
                     .collect(),
                 timecode: run.timecode.or(plan.timecode),
                 fps: run.fps.or(plan.fps),
+                quality: run.quality.or(plan.quality),
+                bits: run.bits.or(plan.bits),
+                transfer: run.transfer.or(plan.transfer),
+                burn_in: run.burn_in.clone().or(plan.burn_in),
+                burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -405,6 +410,7 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         ("--bits", run.bits.is_some()),
         ("--transfer", run.transfer.is_some()),
         ("--burn-in", run.burn_in.is_some()),
+        ("--burn-in-corner", run.burn_in_corner.is_some()),
     ]
     .into_iter()
     .filter_map(|(name, given)| given.then_some(name))
@@ -436,7 +442,7 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
     let burn_in = run
         .burn_in
         .as_deref()
-        .map(|text| BurnIn::parse(text, run.burn_in_corner))
+        .map(|text| BurnIn::parse(text, run.burn_in_corner.unwrap_or_default()))
         .transpose()
         .map_err(Error::usage)?;
     Ok(Some(Review { media, burn_in }))

@@ -475,3 +475,39 @@ fn options_that_do_not_fit_the_format_are_refused() {
     let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(names.len(), 1, "nothing written");
 }
+
+#[test]
+fn a_job_files_write_node_takes_the_review_options() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plate(&d.join("in.0001.exr"), true);
+    let job = d.join("job.toml");
+    std::fs::write(
+        &job,
+        "[[node]]\nname = \"in\"\nread = \"in.####.exr\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"job/out.####.png\"\ninputs = [\"in\"]\n\
+         bits = 16\nburn_in = \"F{frame}\"\nburn_in_corner = \"top-left\"\n",
+    )
+    .unwrap();
+    crate::common::ok(&["run", s(&job), "-q"]);
+    let out = d.join("cli/out.####.png");
+    let input = d.join("in.####.exr");
+    let args = [
+        "--bits",
+        "16",
+        "--burn-in",
+        "F{frame}",
+        "--burn-in-corner",
+        "top-left",
+    ];
+    crate::common::ok(&[&["transcode", s(&input), "-o", s(&out), "-q"][..], &args].concat());
+    let read = |p: &str| std::fs::read(d.join(p)).unwrap();
+    assert_eq!(read("job/out.0001.png"), read("cli/out.0001.png"));
+    // A key's bad value is refused, naming the job file.
+    std::fs::write(
+        &job,
+        std::fs::read_to_string(&job).unwrap() + "quality = 120\n",
+    )
+    .unwrap();
+    refused(&["run", s(&job)], "job.toml");
+}
