@@ -130,136 +130,96 @@ impl Media {
     /// window is `window`, interleaved R, G, B (, A) a pixel; `label`, a
     /// burn-in drawn over them.
     pub fn convert(&self, rows: &Rows, window: IntegerBounds, label: Option<&Label>) -> Strip {
+        let samples = match self.bits {
+            Bits::Eight => {
+                Samples::U8(
+                    self.code_values(rows, window, label, 255, |v, colour, x, y| {
+                        // Colour dithered; alpha rounded.
+                        let threshold = if colour { ordered_dither(x, y) } else { 0.5 };
+                        (self.encode(v, colour) * 255.0 + threshold).min(255.0) as u8
+                    }),
+                )
+            }
+            Bits::Sixteen => {
+                Samples::U16(
+                    self.code_values(rows, window, label, u16::MAX, |v, colour, _, _| {
+                        (self.encode(v, colour) * 65535.0 + 0.5) as u16
+                    }),
+                )
+            }
+            Bits::Float => Samples::F32(self.code_values(rows, window, label, 1.0, |v, _, _, _| v)),
+        };
+        Strip {
+            rows: rows.height,
+            samples,
+        }
+    }
+
+    /// `convert`'s samples of one type: `quantise(v, colour, x, y)` makes
+    /// the sample of value `v` (a colour's, unpremultiplied if alpha is
+    /// kept, or alpha's) at (x, y) of the image; `white` is the burn-in's.
+    fn code_values<T: Copy + Default + Send + Sync>(
+        &self,
+        rows: &Rows,
+        window: IntegerBounds,
+        label: Option<&Label>,
+        white: T,
+        quantise: impl Fn(f32, bool, usize, usize) -> T + Sync,
+    ) -> Vec<T> {
         let index = |name: &str| rows.channel_index(name);
         let luminance = index("Y");
-        let colour = ["R", "G", "B"].map(|c| index(c).or(luminance));
+        let sources = ["R", "G", "B"].map(|c| index(c).or(luminance));
         let alpha_plane = index("A");
         let alpha = self.keeps_alpha(alpha_plane.is_some());
         let samples = if alpha { 4 } else { 3 };
         let width = rows.width;
-        let row_samples = width * samples;
-        let y0 = rows.y;
-        let convert_row = |y: i32, write: &mut dyn FnMut(usize, f32, bool)| {
-            let range = rows.row_range(y);
-            let mut planes = [(); 4].map(|_| vec![0f32; width]);
-            for (plane, source) in planes.iter_mut().zip(colour.iter().chain([&alpha_plane])) {
-                match source {
-                    Some(p) => rows.planes[*p].read_f32(range.clone(), plane),
-                    None => plane.fill(0.0),
-                }
-            }
-            if alpha_plane.is_none() {
-                planes[3].fill(1.0);
-            }
-            let [r, g, b, a] = &planes;
-            for (x, &a) in a.iter().enumerate() {
-                for (c, plane) in [r, g, b].into_iter().enumerate() {
-                    let mut v = plane[x];
-                    if alpha && a > 0.0 {
-                        v /= a;
-                    }
-                    write(x * samples + c, v, true);
-                }
-                if alpha {
-                    write(x * samples + 3, a, false);
-                }
-            }
-        };
-        let burn = |y: i32, row: &mut dyn FnMut(usize, bool)| {
-            if let Some(label) = label {
+        let x0 = (rows.x - window.position.x()) as usize;
+        let mut out = vec![T::default(); width * samples * rows.height];
+        out.par_chunks_mut((width * samples).max(1))
+            .enumerate()
+            .for_each(|(i, row)| {
+                let y = rows.y + i as i32;
                 let image_y = (y - window.position.y()) as usize;
-                let image_x0 = (rows.x - window.position.x()) as usize;
-                for x in 0..width {
-                    if let Some(lit) = label.pixel(image_x0 + x, image_y) {
-                        row(x, lit);
+                let range = rows.row_range(y);
+                let mut planes = [(); 4].map(|_| vec![0f32; width]);
+                for (plane, source) in planes.iter_mut().zip(sources.iter().chain([&alpha_plane])) {
+                    match source {
+                        Some(p) => rows.planes[*p].read_f32(range.clone(), plane),
+                        None => plane.fill(0.0),
                     }
                 }
-            }
-        };
-        let samples_out = match self.bits {
-            Bits::Eight => {
-                let mut out = vec![0u8; row_samples * rows.height];
-                out.par_chunks_mut(row_samples.max(1))
-                    .enumerate()
-                    .for_each(|(i, row)| {
-                        let y = y0 + i as i32;
-                        let dy = (y - window.position.y()) as usize;
-                        let dx = (rows.x - window.position.x()) as usize;
-                        convert_row(y, &mut |at, v, coloured| {
-                            let v = if coloured {
-                                self.encode(v)
-                            } else {
-                                v.clamp(0.0, 1.0)
-                            };
-                            let threshold = match coloured {
-                                true => ordered_dither(dx + at / samples, dy),
-                                false => 0.5,
-                            };
-                            row[at] = (v * 255.0 + threshold).min(255.0) as u8;
-                        });
-                        burn(y, &mut |x, lit| {
-                            let value = if lit { 255 } else { 0 };
-                            row[x * samples..x * samples + 3].fill(value);
-                            if alpha {
-                                row[x * samples + 3] = 255;
-                            }
-                        });
-                    });
-                Samples::U8(out)
-            }
-            Bits::Sixteen => {
-                let mut out = vec![0u16; row_samples * rows.height];
-                out.par_chunks_mut(row_samples.max(1))
-                    .enumerate()
-                    .for_each(|(i, row)| {
-                        let y = y0 + i as i32;
-                        convert_row(y, &mut |at, v, coloured| {
-                            let v = if coloured {
-                                self.encode(v)
-                            } else {
-                                v.clamp(0.0, 1.0)
-                            };
-                            row[at] = (v * 65535.0 + 0.5) as u16;
-                        });
-                        burn(y, &mut |x, lit| {
-                            let value = if lit { u16::MAX } else { 0 };
-                            row[x * samples..x * samples + 3].fill(value);
-                            if alpha {
-                                row[x * samples + 3] = u16::MAX;
-                            }
-                        });
-                    });
-                Samples::U16(out)
-            }
-            Bits::Float => {
-                let mut out = vec![0f32; row_samples * rows.height];
-                out.par_chunks_mut(row_samples.max(1))
-                    .enumerate()
-                    .for_each(|(i, row)| {
-                        let y = y0 + i as i32;
-                        convert_row(y, &mut |at, v, _| row[at] = v);
-                        burn(y, &mut |x, lit| {
-                            let value = if lit { 1.0 } else { 0.0 };
-                            row[x * samples..x * samples + 3].fill(value);
-                            if alpha {
-                                row[x * samples + 3] = 1.0;
-                            }
-                        });
-                    });
-                Samples::F32(out)
-            }
-        };
-        Strip {
-            rows: rows.height,
-            samples: samples_out,
-        }
+                if alpha_plane.is_none() {
+                    planes[3].fill(1.0);
+                }
+                let [r, g, b, a] = &planes;
+                for (x, &a) in a.iter().enumerate() {
+                    let pixel = &mut row[x * samples..(x + 1) * samples];
+                    for (c, plane) in [r, g, b].into_iter().enumerate() {
+                        let mut v = plane[x];
+                        if alpha && a > 0.0 {
+                            v /= a;
+                        }
+                        pixel[c] = quantise(v, true, x0 + x, image_y);
+                    }
+                    if alpha {
+                        pixel[3] = quantise(a, false, x0 + x, image_y);
+                    }
+                    if let Some(lit) = label.and_then(|l| l.pixel(x0 + x, image_y)) {
+                        pixel[..3].fill(if lit { white } else { T::default() });
+                        if alpha {
+                            pixel[3] = white;
+                        }
+                    }
+                }
+            });
+        out
     }
 
-    /// A linear colour value as a display code value, 0..1.
-    fn encode(&self, v: f32) -> f32 {
-        match self.transfer {
-            Transfer::Srgb => srgb_oetf(v.clamp(0.0, 1.0)),
-            Transfer::None => v.clamp(0.0, 1.0),
+    /// A linear colour value (`colour`), or alpha, as a code value, 0..1.
+    fn encode(&self, v: f32, colour: bool) -> f32 {
+        match (colour, self.transfer) {
+            (true, Transfer::Srgb) => srgb_oetf(v.clamp(0.0, 1.0)),
+            _ => v.clamp(0.0, 1.0),
         }
     }
 }

@@ -56,12 +56,17 @@ fn plate(path: &Path, alpha: bool) {
         let values = (0..W * H).map(|i| alpha_at(i % W, i / W)).collect();
         channels.insert("A".to_string(), Samples::F32(values));
     }
+    write_flat(path, (W, H), channels);
+}
+
+/// A W x H image of `channels` at the origin, written as a ZIP file.
+fn write_flat(path: &Path, (width, height): (usize, usize), channels: BTreeMap<String, Samples>) {
     let img = Img {
         x: 0,
         y: 0,
-        width: W,
-        height: H,
-        display: (W, H),
+        width,
+        height,
+        display: (width, height),
         channels,
     };
     write_image(path, &img, Compression::ZIP16, LineOrder::Increasing);
@@ -235,24 +240,6 @@ fn jpeg_is_the_image_over_black_within_jpeg_error_and_opens_in_pillow() {
     plate(&input, true);
     let out = dir.path().join("out.jpg");
     crate::common::ok(&["transcode", s(&input), "-o", s(&out), "-q"]);
-    let image = pillow_decode(&python, &out);
-    assert_eq!((image.width, image.height, image.bands), (W, H, 3));
-    let (mut sum, mut n) = (0.0, 0.0);
-    for y in 0..H {
-        for x in 0..W {
-            for (c, &v) in linear(x, y).iter().enumerate() {
-                // The premultiplied colour: the image over black.
-                let reference = srgb(v as f64 * alpha_at(x, y) as f64) * 255.0;
-                let error = (image.at(x, y, c) as f64 - reference).abs();
-                sum += error;
-                n += 1.0;
-            }
-        }
-    }
-    // Alternating alpha columns are the hardest case for JPEG's 8x8 DCT
-    // and halved chroma: a mean error of a few codes at quality 90.
-    assert!(sum / n < 6.0, "mean error {}", sum / n);
-    // Higher quality, closer; a different file.
     let fine = dir.path().join("fine.jpg");
     crate::common::ok(&[
         "transcode",
@@ -263,7 +250,30 @@ fn jpeg_is_the_image_over_black_within_jpeg_error_and_opens_in_pillow() {
         "100",
         "-q",
     ]);
-    assert!(std::fs::metadata(&fine).unwrap().len() > std::fs::metadata(&out).unwrap().len());
+    // Alternating alpha columns are a hard case for JPEG's 8x8 DCT and
+    // halved chroma: measured mean errors 2.2 codes at quality 90 and 0.5
+    // at 100 (a gamma of 2.2 for the sRGB curve gave 6.1).
+    for (path, bound) in [(&out, 3.0), (&fine, 1.0)] {
+        let image = pillow_decode(&python, path);
+        assert_eq!((image.width, image.height, image.bands), (W, H, 3));
+        let (mut sum, mut n) = (0.0, 0.0);
+        for y in 0..H {
+            for x in 0..W {
+                for (c, &v) in linear(x, y).iter().enumerate() {
+                    // The premultiplied colour: the image over black.
+                    let reference = srgb(v as f64 * alpha_at(x, y) as f64) * 255.0;
+                    sum += (image.at(x, y, c) as f64 - reference).abs();
+                    n += 1.0;
+                }
+            }
+        }
+        assert!(
+            sum / n < bound,
+            "{}: mean error {}",
+            path.display(),
+            sum / n
+        );
+    }
 }
 
 /// Glyphs of the burn-in's text drawn by hand (5x7, `#` lit), the
@@ -285,16 +295,8 @@ fn the_burn_in_is_drawn_in_its_corner_and_nowhere_else() {
     for name in ["R", "G", "B"] {
         channels.insert(name.to_string(), Samples::F32(vec![0.18; width * height]));
     }
-    let img = Img {
-        x: 0,
-        y: 0,
-        width,
-        height,
-        display: (width, height),
-        channels,
-    };
     let input = dir.path().join("in.0001.exr");
-    write_image(&input, &img, Compression::ZIP16, LineOrder::Increasing);
+    write_flat(&input, (width, height), channels);
     let pattern = dir.path().join("in.####.exr");
     let out = dir.path().join("out.####.png");
     let args = [
@@ -440,38 +442,26 @@ fn options_that_do_not_fit_the_format_are_refused() {
     plate(&input, false);
     let out = |name: &str| dir.path().join(name).to_string_lossy().into_owned();
     let i = s(&input);
-    refused(
-        &["transcode", i, "-o", &out("x.gif")],
-        "does not end in .exr, .png",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.png"), "--quality", "50"],
-        "--quality applies to JPEG",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.jpg"), "--bits", "16"],
-        "JPEG output takes 8 bits",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.png"), "--bits", "float"],
-        "8 bits or 16",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.exr"), "--quality", "50"],
-        "review media",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.png"), "--compression", "zip"],
-        "EXR outputs",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.png"), "--burn-in", "{shot}"],
-        "unknown field {shot}",
-    );
-    refused(
-        &["transcode", i, "-o", &out("x.jpg"), "--quality", "101"],
-        "101",
-    );
+    for (name, options, says) in [
+        ("x.gif", &[][..], "does not end in .exr, .png"),
+        (
+            "x.png",
+            &["--quality", "50"][..],
+            "--quality applies to JPEG",
+        ),
+        ("x.jpg", &["--bits", "16"], "JPEG output takes 8 bits"),
+        ("x.png", &["--bits", "float"], "8 bits or 16"),
+        ("x.exr", &["--quality", "50"], "review media"),
+        ("x.png", &["--compression", "zip"], "EXR outputs"),
+        ("x.png", &["--burn-in", "{shot}"], "unknown field {shot}"),
+        ("x.jpg", &["--quality", "101"], "101"),
+    ] {
+        let output = out(name);
+        refused(
+            &[&["transcode", i, "-o", &output][..], options].concat(),
+            says,
+        );
+    }
     let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(names.len(), 1, "nothing written");
 }
