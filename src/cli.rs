@@ -370,6 +370,42 @@ pub struct RunArgs {
     /// NTSC rate as 23.976 (default: the input's).
     #[arg(help_heading = "Output", long, value_name = "RATE", value_parser = crate::io::attributes::parse_rational)]
     pub fps: Option<exr::meta::attribute::Rational>,
+    /// JPEG output's quality, 1 to 100 (default 90).
+    #[arg(help_heading = "Review media (.png, .jpg, .tif outputs)", long, value_parser = clap::value_parser!(u8).range(1..=100))]
+    pub quality: Option<u8>,
+    /// Bits per sample: PNG 8 or 16, TIFF 8, 16 or float (scene-linear, as
+    /// it is); JPEG 8 (default 8).
+    #[arg(
+        help_heading = "Review media (.png, .jpg, .tif outputs)",
+        long,
+        value_enum
+    )]
+    pub bits: Option<crate::io::media::Bits>,
+    /// What turns linear pixels into 8 or 16-bit code values: srgb (the sRGB
+    /// curve, clamped; the default) or none (pixels that are display code
+    /// values already, after ociodisplay).
+    #[arg(
+        help_heading = "Review media (.png, .jpg, .tif outputs)",
+        long,
+        value_enum
+    )]
+    pub transfer: Option<crate::io::media::Transfer>,
+    /// Text drawn into a corner of each frame, white on black; fields:
+    /// {frame}, {frame:4} (zero-padded), {timecode}, {file} (the first
+    /// input's), {output}, {attr:NAME}.
+    #[arg(
+        help_heading = "Review media (.png, .jpg, .tif outputs)",
+        long,
+        value_name = "TEXT"
+    )]
+    pub burn_in: Option<String>,
+    /// The burn-in's corner (default bottom-left).
+    #[arg(
+        help_heading = "Review media (.png, .jpg, .tif outputs)",
+        long,
+        value_enum
+    )]
+    pub burn_in_corner: Option<crate::io::burn_in::Corner>,
     /// Skip frames whose output already exists and decodes completely.
     #[arg(help_heading = "Run control", long)]
     pub resume: bool,

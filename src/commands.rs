@@ -8,12 +8,14 @@ use crate::engine::luminance_chroma;
 use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
-use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Source};
+use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Review, Source};
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
 use crate::generate::Plate;
 use crate::io::attributes::Edits;
+use crate::io::burn_in::BurnIn;
+use crate::io::media::{Format, Media};
 use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
@@ -46,7 +48,13 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
     match command {
         Command::Op(call) => operation(call),
         Command::Stitch { bands, output } => {
-            FramePattern::output(&output.to_string_lossy())?;
+            let pattern = FramePattern::output(&output.to_string_lossy())?;
+            if pattern.format() != Some(Format::Exr) {
+                return Err(Error::usage(format!(
+                    "stitch writes EXR files (it joins their chunks): {} is not one",
+                    output.display()
+                )));
+            }
             refuse_overwriting(bands.clone(), [(None, output.clone())])?;
             crate::io::stitch::stitch(&bands, &output).map(|()| None)
         }
@@ -70,6 +78,11 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
                     .collect(),
                 timecode: run.timecode.or(plan.timecode),
                 fps: run.fps.or(plan.fps),
+                quality: run.quality.or(plan.quality),
+                bits: run.bits.or(plan.bits),
+                transfer: run.transfer.or(plan.transfer),
+                burn_in: run.burn_in.clone().or(plan.burn_in),
+                burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -254,6 +267,7 @@ pub(crate) fn input_job(
     if run.all_parts {
         check_all_parts(texts, &parts, layers)?;
     }
+    let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
     let luminance = luminance_inputs(&inputs, &parts, layers, &graph, &resolved.frames);
     let graph = luminance_chroma::colour_inputs(graph, &luminance);
@@ -277,6 +291,7 @@ pub(crate) fn input_job(
         rows: run.rows,
         all_parts: run.all_parts,
         attributes,
+        media,
     };
     let summary = Summary {
         warnings: crate::engine::assumptions::warnings(&job, texts),
@@ -356,6 +371,7 @@ pub(crate) fn plate_job(
     run: &RunArgs,
 ) -> Result<Job> {
     let display = plate.display_window();
+    let media = review(&output, run)?;
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
     Ok(Job {
@@ -388,7 +404,56 @@ pub(crate) fn plate_job(
         rows: run.rows,
         all_parts: false,
         attributes,
+        media,
     })
+}
+
+/// How `output` is written when it names review media (PNG, JPEG, TIFF),
+/// from `run`'s options; options that do not apply to its format, and
+/// EXR-only ways of writing, are refused.
+fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
+    let format = output.format().unwrap_or(Format::Exr);
+    let given: Vec<&str> = [
+        ("--quality", run.quality.is_some()),
+        ("--bits", run.bits.is_some()),
+        ("--transfer", run.transfer.is_some()),
+        ("--burn-in", run.burn_in.is_some()),
+        ("--burn-in-corner", run.burn_in_corner.is_some()),
+    ]
+    .into_iter()
+    .filter_map(|(name, given)| given.then_some(name))
+    .collect();
+    if format == Format::Exr {
+        return match given.first() {
+            Some(name) => Err(Error::usage(format!(
+                "{name} applies to review media outputs (.png, .jpg, .tif), not {}",
+                output.display()
+            ))),
+            None => Ok(None),
+        };
+    }
+    let exr_only = [
+        ("--compression", run.compression.is_some()),
+        ("--dwa-level", run.dwa_level.is_some()),
+        ("--tile", run.tile.is_some()),
+        ("--rows", run.rows.is_some()),
+        ("--all-parts", run.all_parts),
+    ];
+    if let Some((name, _)) = exr_only.iter().find(|(_, given)| *given) {
+        return Err(Error::usage(format!(
+            "{name} applies to EXR outputs, not {}",
+            output.display()
+        )));
+    }
+    let media = Media::new(format, run.bits, run.quality, run.transfer)
+        .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
+    let burn_in = run
+        .burn_in
+        .as_deref()
+        .map(|text| BurnIn::parse(text, run.burn_in_corner.unwrap_or_default()))
+        .transpose()
+        .map_err(Error::usage)?;
+    Ok(Some(Review { media, burn_in }))
 }
 
 /// The attribute edits `run` asks for.

@@ -154,7 +154,7 @@ pub fn describe_json(path: &Path) -> Result<Value> {
 
 /// What follows `name (type T)` on exrheader's line: `: value`, or `:` and
 /// indented lines; nothing for types it does not know.
-fn value_text(value: &AttributeValue) -> String {
+pub(crate) fn value_text(value: &AttributeValue) -> String {
     use AttributeValue as A;
     let v2f = |v: Vec2<f32>| format!("({} {})", g(v.0.into()), g(v.1.into()));
     let lines = |rows: &[String]| {

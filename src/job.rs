@@ -6,10 +6,13 @@ use crate::cli::parse_tile;
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
 use crate::io::attributes::{parse_attrib, parse_erase, parse_rational, Attrib};
+use crate::io::burn_in::Corner;
+use crate::io::media::{Bits, Transfer};
 use crate::io::sequence::{split_time, InputTime};
 use crate::io::timecode::{parse_spec, TimecodeSpec};
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
+use clap::ValueEnum;
 use exr::math::Vec2;
 use exr::meta::attribute::Rational;
 use serde::Deserialize;
@@ -42,6 +45,11 @@ const WRITE_KEYS: &[&str] = &[
     "erase_attrib",
     "timecode",
     "fps",
+    "quality",
+    "bits",
+    "transfer",
+    "burn_in",
+    "burn_in_corner",
 ];
 const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
 
@@ -69,6 +77,14 @@ pub struct JobPlan {
     pub erase_attribs: Vec<String>,
     pub timecode: Option<TimecodeSpec>,
     pub fps: Option<Rational>,
+    /// The write node's review media keys, as the options of those names
+    /// (`quality`, `bits`, `transfer`, `burn_in`, `burn_in_corner`; the
+    /// command line's win).
+    pub quality: Option<u8>,
+    pub bits: Option<Bits>,
+    pub transfer: Option<Transfer>,
+    pub burn_in: Option<String>,
+    pub burn_in_corner: Option<Corner>,
 }
 
 /// A file name in the job as a path: relative ones are relative to the job
@@ -500,14 +516,32 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
             Some(v) => Some(parse_spec(&string(at, v)?).or_else(|m| at.error(v.span(), m))?),
             None => None,
         },
-        fps: match out.get("fps") {
-            Some(v) => {
-                let text = as_text(v.get_ref()).or_else(|m| at.error(v.span(), m))?;
-                Some(parse_rational(&text).or_else(|m| at.error(v.span(), m))?)
-            }
-            None => None,
-        },
+        fps: option(at, out, "fps", parse_rational)?,
+        quality: option(at, out, "quality", |t| {
+            t.parse()
+                .ok()
+                .filter(|q| (1..=100).contains(q))
+                .ok_or_else(|| format!("quality is 1 to 100, not {t}"))
+        })?,
+        bits: option(at, out, "bits", |t| Bits::from_str(t, false))?,
+        transfer: option(at, out, "transfer", |t| Transfer::from_str(t, false))?,
+        burn_in: option(at, out, "burn_in", |t| Ok(t.to_string()))?,
+        burn_in_corner: option(at, out, "burn_in_corner", |t| Corner::from_str(t, false))?,
     })
+}
+
+/// The write node's `key` as the command-line option of that name takes it.
+fn option<T>(
+    at: &Source,
+    node: &Node,
+    key: &str,
+    parse: impl Fn(&str) -> std::result::Result<T, String>,
+) -> Result<Option<T>> {
+    let Some(v) = node.get(key) else {
+        return Ok(None);
+    };
+    let text = as_text(v.get_ref()).or_else(|m| at.error(v.span(), m))?;
+    Ok(Some(parse(&text).or_else(|m| at.error(v.span(), m))?))
 }
 
 /// A list of strings under `key` of `node`, each with the list's place.

@@ -12,6 +12,7 @@ use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
 use super::stage_time::{self, Stage, StageTimes};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
+use crate::io::media::{self, Strip};
 use crate::io::reader::ExrFile;
 use crate::io::writer::write_file;
 use crate::io::writer::IndexedChunk;
@@ -59,6 +60,12 @@ struct Composed {
     passed: Vec<IndexedChunk>,
 }
 
+/// A strip encoded: an EXR's compressed chunks, or a review frame's rows.
+enum Encoded {
+    Chunks(Vec<IndexedChunk>),
+    Media(Strip),
+}
+
 /// A Begin or Part for the next stage, with `plan`.
 fn relay<T, U>(msg: &Msg<T>, plan: Arc<FramePlan>) -> Msg<U> {
     match msg {
@@ -85,7 +92,7 @@ pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
     let start = StageTimes::now();
     let (decoded_tx, decoded_rx) = bounded::<Msg<Decoded>>(CHANNEL_STRIPS);
     let (composed_tx, composed_rx) = bounded::<Msg<Composed>>(CHANNEL_STRIPS);
-    let (encoded_tx, encoded_rx) = bounded::<Msg<Vec<IndexedChunk>>>(CHANNEL_STRIPS);
+    let (encoded_tx, encoded_rx) = bounded::<Msg<Encoded>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
             scope.spawn(|| {
@@ -102,7 +109,7 @@ pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
                 })
             }),
             scope.spawn(|| {
-                stage_time::stage_thread(Stage::Write, || write_stage(encoded_rx, events))
+                stage_time::stage_thread(Stage::Write, || write_stage(job, encoded_rx, events))
             }),
         ];
         stages.map(|stage| {
@@ -121,7 +128,7 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
         if interrupt::requested() {
             break;
         }
-        if job.resume && output_complete(&job.output.path(sources.frame)) {
+        if job.resume && output_complete(job, &job.output.path(sources.frame)) {
             events.kept(sources.frame);
             continue;
         }
@@ -185,7 +192,11 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         .collect();
     let window = plan.window();
     let columns = (window.position.x(), window.size.width());
-    let pass = PassThrough::find(&job.graph, plan);
+    // Review media have no chunks to pass.
+    let pass = match job.media {
+        Some(_) => None,
+        None => PassThrough::find(&job.graph, plan),
+    };
     // Per input, its columns and the first row not yet read.
     let mut fed: Vec<((i32, usize), i32)> = (0..plan.inputs.len())
         .map(|i| match job.graph.input_node(i) {
@@ -225,9 +236,13 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
     Ok(true)
 }
 
-/// Whether `path` holds a complete EXR file: a valid header and offset table,
-/// and every chunk decodes.
-fn output_complete(path: &std::path::Path) -> bool {
+/// Whether `path` holds a complete output: an EXR file with a valid header
+/// and offset table whose every chunk decodes, or a complete review frame
+/// (`media::complete`).
+fn output_complete(job: &Job, path: &std::path::Path) -> bool {
+    if let Some(review) = &job.media {
+        return media::complete(path, review.media.format);
+    }
     ExrFile::open(path, None)
         .and_then(|file| (0..file.meta.headers.len()).try_for_each(|p| file.check_part(p)))
         .is_ok()
@@ -310,28 +325,34 @@ fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
     Some(rows.copy_rows(top..bottom))
 }
 
-fn encode_stage(
-    job: &Job,
-    rx: Receiver<Msg<Composed>>,
-    tx: Sender<Msg<Vec<IndexedChunk>>>,
-) -> Result<()> {
+fn encode_stage(job: &Job, rx: Receiver<Msg<Composed>>, tx: Sender<Msg<Encoded>>) -> Result<()> {
     let mut plan: Option<Arc<FramePlan>> = None;
+    // A review frame's burn-in, placed.
+    let mut label = None;
     while let Some(msg) = receive(Stage::Encode, &rx) {
         let out = match msg {
             Msg::Begin(ref p) | Msg::Part(ref p) => {
                 plan = Some(p.clone());
+                label = job.media.as_ref().and_then(|review| review.label(p));
                 relay(&msg, p.clone())
             }
             Msg::Strip(composed) => {
                 let plan = plan
                     .as_ref()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
-                Msg::Strip(encode_rows(
-                    &composed.rows,
-                    &plan.header,
-                    job.zip_level,
-                    composed.passed,
-                )?)
+                Msg::Strip(match &job.media {
+                    Some(review) => Encoded::Media(review.media.convert(
+                        &composed.rows,
+                        plan.header.data_window(),
+                        label.as_ref(),
+                    )),
+                    None => Encoded::Chunks(encode_rows(
+                        &composed.rows,
+                        &plan.header,
+                        job.zip_level,
+                        composed.passed,
+                    )?),
+                })
             }
             Msg::End => Msg::End,
             Msg::Abort => Msg::Abort,
@@ -343,7 +364,7 @@ fn encode_stage(
     Ok(())
 }
 
-fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Result<()> {
+fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> Result<()> {
     while let Some(msg) = receive(Stage::Write, &rx) {
         let plan = match msg {
             Msg::Begin(plan) => plan,
@@ -352,9 +373,9 @@ fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Re
         };
         let mut abandoned = false;
         // The writer tells a frame's parts apart by their chunk counts.
-        let next = || loop {
+        let mut next = || loop {
             return match receive(Stage::Write, &rx) {
-                Some(Msg::Strip(chunks)) => Ok(Some(chunks)),
+                Some(Msg::Strip(encoded)) => Ok(Some(encoded)),
                 Some(Msg::Part(_)) => continue,
                 Some(Msg::End) => Ok(None),
                 Some(Msg::Abort) => {
@@ -365,7 +386,34 @@ fn write_stage(rx: Receiver<Msg<Vec<IndexedChunk>>>, events: &impl Events) -> Re
                 None => Err(Error::stopped()),
             };
         };
-        match write_file(&plan.output, plan.label, plan.output_parts(), next) {
+        let written = match &job.media {
+            Some(review) => {
+                let window = plan.header.data_window();
+                let size = (window.size.width(), window.size.height());
+                let alpha = plan
+                    .header
+                    .channels
+                    .list
+                    .iter()
+                    .any(|c| c.name.to_string() == "A");
+                let alpha = review.media.keeps_alpha(alpha);
+                let strips = || match next()? {
+                    Some(Encoded::Media(strip)) => Ok(Some(strip)),
+                    Some(Encoded::Chunks(_)) => Err(Error::internal("chunks for a review frame")),
+                    None => Ok(None),
+                };
+                media::write_frame(&plan.output, plan.label, &review.media, size, alpha, strips)
+            }
+            None => {
+                let chunks = || match next()? {
+                    Some(Encoded::Chunks(chunks)) => Ok(Some(chunks)),
+                    Some(Encoded::Media(_)) => Err(Error::internal("rows for an EXR frame")),
+                    None => Ok(None),
+                };
+                write_file(&plan.output, plan.label, plan.output_parts(), chunks)
+            }
+        };
+        match written {
             Ok(()) => events.written(&plan),
             // The temporary file is gone; an abandoned frame is reported upstream.
             Err(e) if e.kind == Kind::Stopped && abandoned => continue,

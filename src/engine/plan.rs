@@ -93,6 +93,30 @@ pub struct Job {
     pub all_parts: bool,
     /// The user's edits of the output's attributes (`--attrib`, `--timecode`...).
     pub attributes: Edits,
+    /// Review media (PNG, JPEG, TIFF) instead of EXR: how they are written.
+    pub media: Option<Review>,
+}
+
+/// A review media output: its format's options, and a burn-in.
+#[derive(Clone, Debug)]
+pub struct Review {
+    pub media: crate::io::media::Media,
+    pub burn_in: Option<crate::io::burn_in::BurnIn>,
+}
+
+impl Review {
+    /// The burn-in of `plan`'s frame, its fields filled and placed.
+    pub fn label(&self, plan: &FramePlan) -> Option<crate::io::burn_in::Label> {
+        let burn_in = self.burn_in.as_ref()?;
+        let fields = crate::io::burn_in::Fields {
+            frame: plan.frame,
+            header: &plan.header,
+            file: plan.inputs.first().map(|f| f.path.as_path()),
+            output: &plan.output,
+        };
+        let size = plan.header.data_window().size;
+        Some(burn_in.label(burn_in.text(&fields), (size.width(), size.height())))
+    }
 }
 
 /// One output frame and, per input, the frame it reads.

@@ -1,8 +1,10 @@
-//! Files: frame sequences, the EXR reader and writer.
+//! Files: frame sequences, the EXR reader and writer, review media.
 
 pub mod attributes;
+pub mod burn_in;
 pub mod deep;
 pub mod deflate;
+pub mod media;
 pub mod overwrite;
 pub mod parts;
 pub mod png;

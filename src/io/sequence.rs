@@ -45,18 +45,22 @@ impl FramePattern {
         })
     }
 
-    /// A pattern to write: as `parse`, and it must name EXR files, the one
-    /// format exrcomp writes.
+    /// A pattern to write: as `parse`, and it must name a file of a format
+    /// exrcomp writes (`media::Format`: .exr, .png, .jpg, .jpeg, .tif, .tiff).
     pub fn output(text: &str) -> Result<Self> {
         let pattern = Self::parse(text)?;
-        let end = pattern.suffix_or_name().as_bytes();
-        let exr = end.len() >= 4 && end[end.len() - 4..].eq_ignore_ascii_case(b".exr");
-        if !exr {
+        if pattern.format().is_none() {
             return Err(Error::usage(format!(
-                "the output '{text}' does not end in .exr: exrcomp writes OpenEXR files only"
+                "the output '{text}' does not end in .exr, .png, .jpg, .jpeg, .tif or .tiff: \
+                 the formats exrcomp writes"
             )));
         }
         Ok(pattern)
+    }
+
+    /// The format of the files named, by their extension.
+    pub fn format(&self) -> Option<crate::io::media::Format> {
+        crate::io::media::Format::of(self.suffix_or_name())
     }
 
     /// The text after the frame number, or the whole name of a plain file.
@@ -371,9 +375,21 @@ mod tests {
     }
 
     #[test]
-    fn outputs_must_be_exr() {
-        assert!(FramePattern::output("x.jpg").is_err());
-        assert!(FramePattern::output("x.####.png").is_err());
+    fn outputs_must_be_of_a_format_written() {
+        use crate::io::media::Format;
+        assert!(FramePattern::output("x.gif").is_err());
+        assert_eq!(
+            FramePattern::output("x.####.png").unwrap().format(),
+            Some(Format::Png)
+        );
+        assert_eq!(
+            FramePattern::output("x.JPEG").unwrap().format(),
+            Some(Format::Jpeg)
+        );
+        assert_eq!(
+            FramePattern::output("x.%04d.tif").unwrap().format(),
+            Some(Format::Tiff)
+        );
         assert!(FramePattern::output("x.exr.tmp").is_err());
         assert!(FramePattern::output("x.####.EXR").is_ok());
         assert!(FramePattern::output("x.%04d.exr").is_ok());

@@ -38,19 +38,10 @@ pub fn temporary_path(path: &Path) -> PathBuf {
 /// temporary name, renamed into place when complete, its folder created:
 /// as frames are, an output path never holds a partial file.
 pub fn write_whole(path: &Path, bytes: &[u8]) -> Result<()> {
-    let temporary = temporary_path(path);
-    let folder = path.parent().filter(|d| !d.as_os_str().is_empty());
-    folder
-        .map_or(Ok(()), fs::create_dir_all)
-        .and_then(|()| create_locked(&temporary))
-        .and_then(|mut file| {
-            file.write_all(bytes)?;
-            fs::rename(&temporary, path)
-        })
-        .map_err(|e| {
-            let _ = fs::remove_file(&temporary);
-            Error::output(path, None, format!("cannot write: {e}"))
-        })
+    write_in_place(path, None, |file| {
+        file.write_all(bytes)
+            .map_err(|e| Error::output(path, None, format!("cannot write: {e}")))
+    })
 }
 
 /// Creates the temporary file `path` and holds an exclusive lock on it
@@ -130,14 +121,9 @@ pub fn write_file(
     mut next: impl FnMut() -> Result<Option<Vec<IndexedChunk>>>,
 ) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        fs::create_dir_all(dir).map_err(|e| fail(&format!("cannot create folder: {e}")))?;
-    }
-    let temporary = temporary_path(path);
-    let result = (|| {
-        let file = create_locked(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
+    write_in_place(path, frame, |buffered| {
         let mut out = Counting {
-            inner: BufWriter::with_capacity(1 << 20, file),
+            inner: buffered,
             position: 0,
         };
         let headers = &parts.headers;
@@ -200,7 +186,6 @@ pub fn write_file(
                 }
             }
         }
-        let mut file = out.inner.into_inner().map_err(|e| fail(&e.error()))?;
         let table_bytes: Vec<u8> = offsets
             .iter()
             .flatten()
@@ -209,9 +194,32 @@ pub fn write_file(
         if table_bytes.len() != total * 8 {
             return Err(Error::internal("a carried part was not copied whole"));
         }
+        let file = out.inner;
         file.seek(SeekFrom::Start(tables))
             .and_then(|_| file.write_all(&table_bytes))
-            .map_err(|e| fail(&e))?;
+            .map_err(|e| fail(&e))
+    })
+}
+
+/// Creates `path`'s folder, runs `write` on a buffered file at
+/// `path`'s temporary name, then flushes it, syncs it to disk and renames
+/// it into place; on any error the temporary file is removed and the
+/// error returned as it is.
+pub fn write_in_place(
+    path: &Path,
+    frame: Option<i64>,
+    write: impl FnOnce(&mut BufWriter<File>) -> Result<()>,
+) -> Result<()> {
+    let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        fs::create_dir_all(dir).map_err(|e| fail(&format!("cannot create folder: {e}")))?;
+    }
+    let temporary = temporary_path(path);
+    let result = (|| {
+        let file = create_locked(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
+        let mut buffered = BufWriter::with_capacity(1 << 20, file);
+        write(&mut buffered)?;
+        let file = buffered.into_inner().map_err(|e| fail(&e.error()))?;
         file.sync_all().map_err(|e| fail(&e))?;
         fs::rename(&temporary, path).map_err(|e| fail(&format!("cannot rename into place: {e}")))
     })();

@@ -30,6 +30,7 @@ mod passthrough;
 mod peers;
 mod real_files;
 mod resize;
+mod review_media;
 mod sequences_and_errors;
 mod shuffle;
 mod stack;

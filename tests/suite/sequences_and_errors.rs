@@ -119,13 +119,13 @@ fn an_output_naming_an_input_by_any_spelling_is_refused() {
 }
 
 #[test]
-fn outputs_must_be_exr_and_patterns_sane() {
+fn outputs_must_be_of_a_format_written_and_patterns_sane() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     write_sequence(d, "bg", [1], 0);
     for (output, text) in [
-        ("x.jpg", "does not end in .exr"),
-        ("x.####.png", "does not end in .exr"),
+        ("x.gif", "does not end in .exr, .png"),
+        ("x.####.exr.tmp", "does not end in .exr, .png"),
         ("out/b.%099999d.exr", "at most 20"),
     ] {
         let (input, output_path) = (d.join("bg.####.exr"), d.join(output));
@@ -133,6 +133,15 @@ fn outputs_must_be_exr_and_patterns_sane() {
         assert_eq!(out.status.code(), Some(2), "{output}: {}", stderr(&out));
         assert!(stderr(&out).contains(text), "{output}: {}", stderr(&out));
     }
+    // stitch joins EXR chunks: its output is EXR.
+    let band = d.join("bg.0001.exr");
+    let out = run(&["stitch", s(&band), s(&band), "-o", s(&d.join("x.png"))]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("stitch writes EXR"),
+        "{}",
+        stderr(&out)
+    );
     assert_eq!(entries(d), ["bg.0001.exr"]);
 }
 

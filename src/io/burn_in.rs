@@ -1,0 +1,229 @@
+//! `--burn-in TEXT`: a line of text drawn into a corner of each review
+//! frame, white on a black box, in the built-in 5x7 font (`font.rs`)
+//! scaled with the frame's height. Fields in braces are each frame's own:
+//! `{frame}` (`{frame:4}` zero-padded to 4 digits), `{timecode}`, `{file}`
+//! (the first input's file), `{output}` (the file written) and
+//! `{attr:NAME}` (an attribute of the output's header).
+
+use crate::font;
+use exr::meta::attribute::AttributeValue;
+use exr::meta::header::Header;
+use std::path::Path;
+
+/// Where the text goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Corner {
+    #[default]
+    BottomLeft,
+    BottomRight,
+    TopLeft,
+    TopRight,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Piece {
+    Text(String),
+    Frame(usize),
+    Timecode,
+    File,
+    Output,
+    Attribute(String),
+}
+
+/// A burn-in's text, its fields parsed, and its corner.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BurnIn {
+    pieces: Vec<Piece>,
+    pub corner: Corner,
+}
+
+/// What a frame's fields are filled from.
+pub struct Fields<'a> {
+    pub frame: i64,
+    pub header: &'a Header,
+    pub file: Option<&'a Path>,
+    pub output: &'a Path,
+}
+
+impl BurnIn {
+    /// `text` with its fields; an unknown field or an unclosed brace is
+    /// refused, naming the fields there are.
+    pub fn parse(text: &str, corner: Corner) -> Result<BurnIn, String> {
+        let mut pieces = Vec::new();
+        let mut rest = text;
+        while let Some(open) = rest.find('{') {
+            pieces.push(Piece::Text(rest[..open].to_string()));
+            let close = rest[open..]
+                .find('}')
+                .ok_or_else(|| format!("--burn-in '{text}': a '{{' without its '}}'"))?;
+            let field = &rest[open + 1..open + close];
+            pieces.push(match field.split_once(':') {
+                None if field == "frame" => Piece::Frame(0),
+                None if field == "timecode" => Piece::Timecode,
+                None if field == "file" => Piece::File,
+                None if field == "output" => Piece::Output,
+                Some(("frame", digits)) => match digits.parse::<usize>() {
+                    Ok(n) if n <= 20 => Piece::Frame(n),
+                    _ => return Err(format!("--burn-in '{text}': {{frame:N}} pads to N digits, 0 to 20")),
+                },
+                Some(("attr", name)) if !name.is_empty() => Piece::Attribute(name.to_string()),
+                _ => {
+                    return Err(format!(
+                        "--burn-in '{text}': unknown field {{{field}}} (fields: {{frame}}, {{frame:4}}, \
+                         {{timecode}}, {{file}}, {{output}}, {{attr:NAME}})"
+                    ))
+                }
+            });
+            rest = &rest[open + close + 1..];
+        }
+        pieces.push(Piece::Text(rest.to_string()));
+        pieces.retain(|p| *p != Piece::Text(String::new()));
+        Ok(BurnIn { pieces, corner })
+    }
+
+    /// The text of one frame; a field the frame lacks (no timecode, no
+    /// such attribute) reads `-`.
+    pub fn text(&self, fields: &Fields) -> String {
+        let name = |path: &Path| {
+            path.file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        };
+        self.pieces
+            .iter()
+            .map(|piece| match piece {
+                Piece::Text(text) => text.clone(),
+                Piece::Frame(width) => format!("{:0width$}", fields.frame),
+                Piece::Timecode => fields
+                    .header
+                    .shared_attributes
+                    .time_code
+                    .as_ref()
+                    .map(super::timecode::display)
+                    .unwrap_or_else(|| "-".to_string()),
+                Piece::File => fields.file.map(name).unwrap_or_else(|| "-".to_string()),
+                Piece::Output => name(fields.output),
+                Piece::Attribute(wanted) => fields
+                    .header
+                    .all_named_attributes()
+                    .find(|(name, _)| name.eq_ignore_ascii_case(wanted.as_bytes()))
+                    .map(|(_, value)| attribute_text(&value))
+                    .unwrap_or_else(|| "-".to_string()),
+            })
+            .collect()
+    }
+
+    /// `text` placed in this burn-in's corner of an image of `width` x
+    /// `height` pixels.
+    pub fn label(&self, text: String, (width, height): (usize, usize)) -> Label {
+        let scale = (height / SCALE_PER).max(1);
+        let margin = 2 * scale;
+        let box_width = font::text_width(&text) * scale + 2 * scale;
+        let box_height = font::HEIGHT * scale + 2 * scale;
+        let left = matches!(self.corner, Corner::BottomLeft | Corner::TopLeft);
+        let top = matches!(self.corner, Corner::TopLeft | Corner::TopRight);
+        Label {
+            x: match left {
+                true => margin,
+                false => width.saturating_sub(margin + box_width),
+            },
+            y: match top {
+                true => margin,
+                false => height.saturating_sub(margin + box_height),
+            },
+            width: box_width,
+            height: box_height,
+            scale,
+            text: text.chars().collect(),
+        }
+    }
+}
+
+/// Image rows per font pixel: 5x7 glyphs 28 pixels tall on 1080 lines.
+pub const SCALE_PER: usize = 240;
+
+/// An attribute's value as text: a string as it is, another type as
+/// `exrcomp info` prints it.
+fn attribute_text(value: &AttributeValue) -> String {
+    match value {
+        AttributeValue::Text(text) => text.to_string(),
+        other => crate::info::value_text(other)
+            .trim_start_matches(':')
+            .trim()
+            .to_string(),
+    }
+}
+
+/// A frame's burn-in: its box, in the image's pixels from the top-left
+/// corner of the data window, and its text.
+#[derive(Clone, Debug)]
+pub struct Label {
+    pub x: usize,
+    pub y: usize,
+    pub width: usize,
+    pub height: usize,
+    pub scale: usize,
+    text: Vec<char>,
+}
+
+impl Label {
+    /// Inside the box, whether pixel (x, y) is lit (white) or not (black);
+    /// `None` outside it.
+    pub fn pixel(&self, x: usize, y: usize) -> Option<bool> {
+        let (dx, dy) = (x.checked_sub(self.x)?, y.checked_sub(self.y)?);
+        if dx >= self.width || dy >= self.height {
+            return None;
+        }
+        let (gx, gy) = (
+            (dx / self.scale).checked_sub(1),
+            (dy / self.scale).checked_sub(1),
+        );
+        let lit = gx.zip(gy).is_some_and(|(gx, gy)| {
+            let c = self.text.get(gx / font::ADVANCE);
+            c.is_some_and(|&c| gy < font::HEIGHT && font::lit(c, gx % font::ADVANCE, gy))
+        });
+        Some(lit)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_are_parsed_and_unknown_ones_refused() {
+        let burn = BurnIn::parse("SH010 {frame:4} {attr:owner}", Corner::TopRight).unwrap();
+        let mut header = Header::new("image".into(), (1, 1), Default::default());
+        header
+            .own_attributes
+            .other
+            .insert("owner".into(), AttributeValue::Text("studio".into()));
+        let fields = Fields {
+            frame: 7,
+            header: &header,
+            file: None,
+            output: Path::new("out/x.0007.jpg"),
+        };
+        assert_eq!(burn.text(&fields), "SH010 0007 studio");
+        let burn = BurnIn::parse("{output} {timecode} {file}", Corner::TopRight).unwrap();
+        assert_eq!(burn.text(&fields), "x.0007.jpg - -");
+        assert!(BurnIn::parse("{shot}", Corner::TopLeft).is_err());
+        assert!(BurnIn::parse("{frame", Corner::TopLeft).is_err());
+        assert!(BurnIn::parse("{frame:x}", Corner::TopLeft).is_err());
+    }
+
+    #[test]
+    fn the_label_sits_in_its_corner_and_draws_the_font() {
+        let burn = BurnIn::parse("L", Corner::BottomRight).unwrap();
+        let label = burn.label("L".to_string(), (1920, 1080));
+        assert_eq!(label.scale, 4);
+        // 5 pixels of glyph and one of box each side, at scale 4.
+        assert_eq!((label.width, label.height), (28, 36));
+        assert_eq!((label.x, label.y), (1920 - 8 - 28, 1080 - 8 - 36));
+        assert_eq!(label.pixel(label.x, label.y), Some(false));
+        assert_eq!(label.pixel(label.x - 1, label.y), None);
+        // L's top-left pixel is lit, its top-right not.
+        assert_eq!(label.pixel(label.x + 4, label.y + 4), Some(true));
+        assert_eq!(label.pixel(label.x + 4 + 16, label.y + 4), Some(false));
+    }
+}
