@@ -153,7 +153,7 @@ macro_rules! number {
         }
     )*};
 }
-number!(f32, u32);
+number!(f32, f64, u32);
 
 impl Value for bool {
     fn parse(text: &str) -> std::result::Result<Self, String> {

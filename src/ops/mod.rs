@@ -20,6 +20,7 @@ pub mod shuffle;
 pub mod stereo;
 #[cfg(test)]
 pub mod testing;
+pub mod transform;
 pub mod vblur;
 pub mod zmerge;
 
@@ -63,6 +64,7 @@ pub const ALL: &[&Operation] = &[
     &crop::CROP,
     &crop::PAD,
     &reformat::REFORMAT,
+    &transform::TRANSFORM,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {

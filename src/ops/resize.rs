@@ -166,7 +166,7 @@ impl Value for Filter {
 
 impl Filter {
     /// OpenImageIO's default width, in pixels of the smaller image.
-    fn width(self) -> f32 {
+    pub fn width(self) -> f32 {
         match self {
             Filter::Box => 1.0,
             Filter::Triangle => 2.0,
@@ -177,7 +177,7 @@ impl Filter {
     }
 
     /// The filter stretched to `width`, at `x` (OpenImageIO's 1-D forms).
-    fn at(self, x: f32, width: f32) -> f32 {
+    pub fn at(self, x: f32, width: f32) -> f32 {
         let x = x.abs();
         let unit = x * 2.0 / width;
         match self {

@@ -36,3 +36,4 @@ mod stack;
 mod stage_times;
 mod tiled;
 mod tiled_output;
+mod transform;
