@@ -46,7 +46,7 @@ impl Job {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::job::load(Path::new(&inputs[0]))?;
+            let plan = crate::job::load(Path::new(&inputs[0]), None)?;
             inputs = plan.reads.into_iter().map(|(read, _)| read).collect();
             if output.is_none() {
                 task.args.extend(["-o".to_string(), plan.output]);

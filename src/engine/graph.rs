@@ -186,6 +186,28 @@ impl Graph {
         GraphBuilder::with_inputs(1).0.finish()
     }
 
+    /// The graph with `add`'s nodes after each input node, read in its
+    /// place by every node that read it (`--proxy-scale`'s resize).
+    pub fn after_inputs(self, add: impl Fn(&mut GraphBuilder, NodeId) -> NodeId) -> Graph {
+        let mut builder = GraphBuilder::default();
+        let mut moved: Vec<usize> = Vec::with_capacity(self.nodes.len());
+        for node in self.nodes {
+            let id = match node {
+                Node::Input(i) => {
+                    let input = builder.input(i);
+                    add(&mut builder, input).0
+                }
+                Node::Op { op, inputs, origin } => {
+                    let inputs = inputs.iter().map(|&n| moved[n]).collect();
+                    builder.nodes.push(Node::Op { op, inputs, origin });
+                    builder.nodes.len() - 1
+                }
+            };
+            moved.push(id);
+        }
+        builder.finish()
+    }
+
     pub fn output(&self) -> usize {
         self.nodes.len() - 1
     }

@@ -5,7 +5,7 @@
 //! by Nuke's names or WxH. Rules: specs/ops.md, "reformat".
 
 use super::crop::Crop;
-use super::declare::{input, params, Args, Operation, Value};
+use super::declare::{input, params, Args, Length, Operation, Value};
 use super::resize::{passes, Filter, Fit, Size, Target};
 use crate::engine::graph::{GraphBuilder, NodeId};
 use exr::meta::attribute::IntegerBounds;
@@ -27,8 +27,8 @@ pub const REFORMAT: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH.
-        format: Format,
+        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH pixels.
+        format: Format {pixels},
         /// width, height (aspect kept), fit (inside), fill (covering) or distort.
         fit: Fit = "width",
         /// Centre the image in the format (else at its top left corner).
@@ -76,6 +76,14 @@ impl Value for Format {
                 )
             }),
         }
+    }
+}
+
+/// A named format's size scaled as a WxH one.
+impl Length for Format {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let Format(size) = Format::parse(text)?;
+        Size::scaled(&format!("{}x{}", size.width, size.height), factor)
     }
 }
 

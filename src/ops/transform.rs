@@ -7,7 +7,7 @@
 //! for, clipped to the input's data, plus the filter's radius. Formulas and
 //! memory: specs/ops.md, "transform".
 
-use super::declare::{input, params, Args, Operation, Value};
+use super::declare::{input, params, Args, Length, Operation, Value};
 use super::resize::Filter;
 use crate::engine::graph::{union, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
@@ -33,7 +33,7 @@ pub const TRANSFORM: Operation = Operation {
 params! {
     pub struct Params {
         /// Move by X,Y pixels (y up, as Nuke's translate).
-        translate: Pair [TRANSLATE] = "0,0",
+        translate: Pair [TRANSLATE] {pixels} = "0,0",
         /// Degrees counter-clockwise about the centre.
         rotate: f64 [ROTATE] = "0",
         /// A factor for both sides, or X,Y (negative mirrors) about the centre.
@@ -41,7 +41,7 @@ params! {
         /// X,Y: x moves by X times y, then y by Y times x (about the centre, y up).
         skew: Pair [SKEW] = "0,0",
         /// The centre X,Y in pixels from the display window's bottom left corner, y up (default its middle).
-        center: Option<Pair> [TRANSLATE],
+        center: Option<Pair> [TRANSLATE] {pixels},
         /// Mirror top to bottom about the centre (oiiotool's --flip).
         flip: bool,
         /// Mirror left to right about the centre (oiiotool's --flop).
@@ -76,6 +76,13 @@ impl Value for Pair {
                 bound.name
             )),
         }
+    }
+}
+
+impl Length for Pair {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let Pair(x, y) = Pair::parse(text)?;
+        Ok(format!("{},{}", x * factor, y * factor))
     }
 }
 

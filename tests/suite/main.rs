@@ -28,6 +28,7 @@ mod over_reference;
 mod overnight;
 mod passthrough;
 mod peers;
+mod proxy;
 mod real_files;
 mod resize;
 mod sequences_and_errors;

@@ -227,28 +227,22 @@ fn bad_sizes_and_both_or_neither_are_refused_with_a_message() {
         exr::meta::attribute::LineOrder::Increasing,
     );
     let out = dir.path().join("o.exr");
-    for (args, says) in [
-        (vec!["--size", "0x10"], "expected WxH"),
-        (vec!["--size", "640"], "expected WxH"),
-        (vec!["--scale", "0"], "scale"),
-        (vec![], "one of size (WxH) and scale"),
-        (
-            vec!["--size", "4x4", "--scale", "2"],
-            "one of size (WxH) and scale",
-        ),
-        (vec!["--size", "4x4", "--filter", "sinc"], "unknown filter"),
-    ] {
-        let mut all = vec!["resize", s(&input), "-o", s(&out)];
-        all.extend(&args);
-        let result = run(&all);
-        assert!(!result.status.success(), "{args:?} accepted");
-        assert!(
-            stderr(&result).contains(says),
-            "{args:?}: {}",
-            stderr(&result)
-        );
-        assert!(!out.exists(), "{args:?} wrote a file");
-    }
+    assert_refused(
+        "resize",
+        &input,
+        &out,
+        &[
+            (&["--size", "0x10"], "expected WxH"),
+            (&["--size", "640"], "expected WxH"),
+            (&["--scale", "0"], "scale"),
+            (&[], "one of size (WxH) and scale"),
+            (
+                &["--size", "4x4", "--scale", "2"],
+                "one of size (WxH) and scale",
+            ),
+            (&["--size", "4x4", "--filter", "sinc"], "unknown filter"),
+        ],
+    );
 }
 
 /// One half step of the larger, or 2^-16 of the image's peak (see

@@ -318,23 +318,17 @@ fn the_job_node_agrees_and_bad_values_are_refused() {
     assert!(ran.status.success(), "{}", stderr(&ran));
     assert_identical(&read_image(&from_job), &read_image(&out));
     let bad = dir.path().join("bad.exr");
-    for (args, says) in [
-        (vec!["--scale", "0"], "scale must not be 0"),
-        (vec!["--translate", "1,2,3"], "expected X,Y"),
-        (vec!["--rotate", "nan"], "rotate must be a number"),
-        (vec!["--filter", "sinc"], "unknown filter"),
-    ] {
-        let mut all = vec!["transform", s(&input), "-o", s(&bad)];
-        all.extend(&args);
-        let result = run(&all);
-        assert!(!result.status.success(), "{args:?} accepted");
-        assert!(
-            stderr(&result).contains(says),
-            "{args:?}: {}",
-            stderr(&result)
-        );
-        assert!(!bad.exists(), "{args:?} wrote a file");
-    }
+    assert_refused(
+        "transform",
+        &input,
+        &bad,
+        &[
+            (&["--scale", "0"], "scale must not be 0"),
+            (&["--translate", "1,2,3"], "expected X,Y"),
+            (&["--rotate", "nan"], "rotate must be a number"),
+            (&["--filter", "sinc"], "unknown filter"),
+        ],
+    );
 }
 
 /// A flip reads its input's last rows first: it holds the whole input, and

@@ -768,6 +768,23 @@ sys.stdout.buffer.write(struct.pack('>II', w, h) + b''.join(rows))
     Some((w, h, pixels))
 }
 
+/// `exrcomp OP INPUT -o OUTPUT ARGS...` fails for each case, saying what
+/// it says, and writes nothing.
+pub fn assert_refused(op: &str, input: &Path, output: &Path, cases: &[(&[&str], &str)]) {
+    for &(args, says) in cases {
+        let mut all = vec![op, s(input), "-o", s(output)];
+        all.extend(args);
+        let result = run(&all);
+        assert!(!result.status.success(), "{args:?} accepted");
+        assert!(
+            stderr(&result).contains(says),
+            "{args:?}: {}",
+            stderr(&result)
+        );
+        assert!(!output.exists(), "{args:?} wrote a file");
+    }
+}
+
 /// Runs exrcomp with `args`, which must succeed.
 pub fn ok(args: &[&str]) {
     let out = run(args);
