@@ -229,8 +229,9 @@ pub(crate) fn input_job(
     // A proxy: each input resized as it is read (the operations' lengths
     // were scaled when they were built).
     let graph = match run.proxy_scale {
-        Some(factor) => graph
-            .after_inputs(|graph, input| passes(Target::Scale(factor), Filter::Box, input, graph)),
+        Some(factor) => graph.after_inputs(|graph, _, input| {
+            passes(Target::Scale(factor), Filter::Box, input, graph)
+        }),
         None => graph,
     };
     let mut inputs = Vec::new();
