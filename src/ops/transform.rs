@@ -7,7 +7,7 @@
 //! for, clipped to the input's data, plus the filter's radius. Formulas and
 //! memory: specs/ops.md, "transform".
 
-use super::declare::{input, params, Args, Length, Operation, Value};
+use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::Filter;
 use crate::engine::graph::{union, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
@@ -20,14 +20,10 @@ pub const TRANSFORM: Operation = Operation {
     about: "Translate, rotate, scale and skew about a centre, flip or flop, as Nuke's Transform \
             (y up, degrees counter-clockwise), filtered; the data window becomes the transformed \
             one's bounding box, the display window is kept",
-    inputs: &[input("input", "Input file or sequence, `:PART` for a part")],
-    repeats: false,
     params: Params::PARAMS,
-    layers: false,
-    straight: false,
-    header: Some(0),
     build,
-    measure: None,
+    // One input, no layer options, the input's header: as resize.
+    ..super::resize::RESIZE
 };
 
 params! {

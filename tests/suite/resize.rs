@@ -199,19 +199,7 @@ fn resize_by_a_scale_rounds_the_sides_and_the_job_node_agrees() {
     let got = read_image(&out);
     assert_eq!(got.display, (22, 17));
     assert_close(&got, &reference(&img, "lanczos3", (22, 17)), "scale 0.55");
-    let job = dir.path().join("job.toml");
-    let from_job = dir.path().join("job.exr");
-    std::fs::write(
-        &job,
-        format!(
-            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"small\"\nop = \"resize\"\nscale = 0.55\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"small\"]\n",
-            s(&input),
-            s(&from_job)
-        ),
-    )
-    .unwrap();
-    let ran = run(&["run", s(&job), "--quiet"]);
-    assert!(ran.status.success(), "{}", stderr(&ran));
+    let from_job = one_op_job(dir.path(), &input, "op = \"resize\"\nscale = 0.55");
     assert_identical(&read_image(&from_job), &got);
 }
 

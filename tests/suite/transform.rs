@@ -303,19 +303,11 @@ fn the_job_node_agrees_and_bad_values_are_refused() {
     let (input, _) = plate(dir.path(), 16, 12);
     let out = dir.path().join("cli.exr");
     transform(&input, &out, &["--rotate", "10", "--center", "4,4"]);
-    let job = dir.path().join("job.toml");
-    let from_job = dir.path().join("job.exr");
-    std::fs::write(
-        &job,
-        format!(
-            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"t\"\nop = \"transform\"\nrotate = 10\ncenter = \"4,4\"\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"t\"]\n",
-            s(&input),
-            s(&from_job)
-        ),
-    )
-    .unwrap();
-    let ran = run(&["run", s(&job), "--quiet"]);
-    assert!(ran.status.success(), "{}", stderr(&ran));
+    let from_job = one_op_job(
+        dir.path(),
+        &input,
+        "op = \"transform\"\nrotate = 10\ncenter = \"4,4\"",
+    );
     assert_identical(&read_image(&from_job), &read_image(&out));
     let bad = dir.path().join("bad.exr");
     assert_refused(
