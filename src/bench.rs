@@ -48,7 +48,7 @@ impl Job {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::job::load(Path::new(&inputs[0]))?;
+            let plan = crate::job::load(Path::new(&inputs[0]), None)?;
             // The job file, then what it reads.
             inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
             if output.is_none() {

@@ -433,6 +433,11 @@ pub struct RunArgs {
     /// operations of one input (specs/file-format.md, "Parts").
     #[arg(help_heading = "Frames and sequences", long, conflicts_with = "rows")]
     pub all_parts: bool,
+    /// Run the whole graph at this fraction of the size (0.5: half), for
+    /// previews: each input resized as it is read (resize's box filter),
+    /// each operation's lengths in pixels (radii, regions, shifts) scaled.
+    #[arg(help_heading = "Output", long, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
+    pub proxy_scale: Option<f32>,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]

@@ -23,6 +23,7 @@ use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, Frame
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
+use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{count, Report, Summary};
 use exr::prelude::Compression;
@@ -60,7 +61,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
         }
         Command::Farm { farm } => farm::write_job(&farm, &working_folder()?).map(|()| None),
         Command::Run { job, output, run } => {
-            let mut plan = crate::job::load(&job)?;
+            let mut plan = crate::job::load(&job, run.proxy_scale)?;
             if let Some(output) = output {
                 plan.output = output;
             }
@@ -167,6 +168,11 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
                 None => vec![1],
             };
             check_frame_count(&frames, &output)?;
+            if run.proxy_scale.is_some() {
+                return Err(Error::usage(
+                    "generate writes plates at their size: --proxy-scale is for commands that read inputs",
+                ));
+            }
             let job = plate_job(plate, output, frames, &run)?;
             run_job(&job, "generate", &run, Summary::default())
         }
@@ -199,6 +205,10 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
     if let (Some(measure), false) = (op.measure, call.run.dry_run) {
         let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
         args.values.extend(measure(&args, &first)?);
+    }
+    if let Some(factor) = call.run.proxy_scale {
+        op.scale_lengths(&mut args, factor as f64)
+            .map_err(|m| Error::usage(format!("--proxy-scale: {m}")))?;
     }
     let (mut graph, inputs) = GraphBuilder::with_inputs(call.inputs.len());
     (op.build)(&args, &mut graph, &inputs).map_err(Error::usage)?;
@@ -237,6 +247,14 @@ pub(crate) fn input_job(
     layers: &LayerArgs,
     run: &RunArgs,
 ) -> Result<(Job, Summary)> {
+    // A proxy: each input resized as it is read (the operations' lengths
+    // were scaled when they were built).
+    let graph = match run.proxy_scale {
+        Some(factor) => graph.after_inputs(|graph, _, input| {
+            passes(Target::Scale(factor), Filter::Box, input, graph)
+        }),
+        None => graph,
+    };
     let mut inputs = Vec::new();
     let mut parts = Vec::new();
     let mut times = Vec::new();

@@ -102,6 +102,8 @@ fn beside(job: &Path, file: &str) -> String {
 /// Where in the job file something is, for messages: "job.toml:12".
 struct Source<'a> {
     path: &'a Path,
+    /// `--proxy-scale`: the operations' lengths in pixels scaled by it.
+    proxy: Option<f32>,
     /// Where each line after the first starts, for finding lines in
     /// logarithmic time (a job can have a hundred thousand nodes).
     line_starts: Vec<usize>,
@@ -110,7 +112,11 @@ struct Source<'a> {
 impl<'a> Source<'a> {
     fn new(path: &'a Path, text: &str) -> Self {
         let line_starts = text.match_indices('\n').map(|(i, _)| i + 1).collect();
-        Source { path, line_starts }
+        Source {
+            path,
+            line_starts,
+            proxy: None,
+        }
     }
 
     fn line(&self, offset: usize) -> usize {
@@ -126,10 +132,15 @@ impl<'a> Source<'a> {
     }
 }
 
-pub fn load(path: &Path) -> Result<JobPlan> {
+/// The job file at `path`, its operations' lengths in pixels scaled by
+/// `proxy` when it is given.
+pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobPlan> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
-    let at = Source::new(path, &text);
+    let at = Source {
+        proxy,
+        ..Source::new(path, &text)
+    };
     let file: JobFile = toml::from_str(&text).map_err(|e| {
         let line = e.span().map(|s| at.line(s.start)).unwrap_or(0);
         Error::usage(format!("{}:{line}: {}", path.display(), e.message()))
@@ -618,7 +629,11 @@ fn operation(
             ),
         );
     }
-    let args = node.args(at, op)?;
+    let mut args = node.args(at, op)?;
+    if let Some(factor) = at.proxy {
+        op.scale_lengths(&mut args, factor as f64)
+            .or_else(|m| at.error(node.span.clone(), format!("--proxy-scale: {m}")))?;
+    }
     (op.build)(&args, graph, inputs).or_else(|m| at.error(node.span.clone(), m))
 }
 

@@ -54,6 +54,11 @@ const fn bound(name: &'static str, min: f64, max: f64) -> Bound {
 pub const THREADS_PER_CORE: usize = 8;
 pub const MIX: Bound = bound("mix", 0.0, 1.0);
 pub const RESIZE_SCALE: Bound = bound("scale", 1e-4, 1e4);
+pub const PROXY_SCALE: Bound = bound("proxy_scale", 0.01, 1.0);
+pub const TRANSLATE: Bound = bound("translate", -1048576.0, 1048576.0);
+pub const ROTATE: Bound = bound("rotate", -1e6, 1e6);
+pub const TRANSFORM_SCALE: Bound = bound("scale", -1e4, 1e4);
+pub const SKEW: Bound = bound("skew", -100.0, 100.0);
 pub const BLUR_RADIUS: Bound = bound("radius", 0.0, 4096.0);
 pub const MORPH_RADIUS: Bound = bound("radius", 0.0, 1024.0);
 pub const FOCUS: Bound = bound("focus", 0.0, 1e9);

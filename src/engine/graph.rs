@@ -195,6 +195,30 @@ impl Graph {
         GraphBuilder::with_inputs(1).0.finish()
     }
 
+    /// The graph with `add`'s nodes after each input node (given the input's
+    /// index and node), its last one read in the input's place by every
+    /// node that read it (`--proxy-scale`'s resize, a luminance input's
+    /// conversion).
+    pub fn after_inputs(self, add: impl Fn(&mut GraphBuilder, usize, NodeId) -> NodeId) -> Graph {
+        let mut builder = GraphBuilder::default();
+        let mut moved: Vec<usize> = Vec::with_capacity(self.nodes.len());
+        for node in self.nodes {
+            let id = match node {
+                Node::Input(i) => {
+                    let input = builder.input(i);
+                    add(&mut builder, i, input).0
+                }
+                Node::Op { op, inputs, origin } => {
+                    let inputs = inputs.iter().map(|&n| moved[n]).collect();
+                    builder.nodes.push(Node::Op { op, inputs, origin });
+                    builder.nodes.len() - 1
+                }
+            };
+            moved.push(id);
+        }
+        builder.finish()
+    }
+
     pub fn output(&self) -> usize {
         self.nodes.len() - 1
     }

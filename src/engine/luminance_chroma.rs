@@ -12,7 +12,7 @@
 //! frame is luminance/chroma or `Y` only (`colour_inputs`); frames that are
 //! RGB after all pass through it unchanged.
 
-use super::graph::{Graph, Node, Op};
+use super::graph::{Graph, Op};
 use super::strip::{Rows, RowsMut};
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, Chromaticities, SampleType};
@@ -462,27 +462,8 @@ pub fn colour_inputs(graph: Graph, luminance: &[Option<[f32; 3]>]) -> Graph {
     if luminance.iter().all(Option::is_none) {
         return graph;
     }
-    let mut nodes = Vec::with_capacity(graph.nodes.len() + luminance.len());
-    let mut moved = Vec::with_capacity(graph.nodes.len());
-    for node in graph.nodes {
-        match node {
-            Node::Input(i) => {
-                nodes.push(Node::Input(i));
-                if let Some(&Some(weights)) = luminance.get(i) {
-                    nodes.push(Node::Op {
-                        op: Box::new(FromLuminance { weights }),
-                        inputs: vec![nodes.len() - 1],
-                        origin: None,
-                    });
-                }
-                moved.push(nodes.len() - 1);
-            }
-            Node::Op { op, inputs, origin } => {
-                let inputs = inputs.iter().map(|&n| moved[n]).collect();
-                nodes.push(Node::Op { op, inputs, origin });
-                moved.push(nodes.len() - 1);
-            }
-        }
-    }
-    Graph { nodes }
+    graph.after_inputs(|builder, i, input| match luminance.get(i) {
+        Some(&Some(weights)) => builder.add(FromLuminance { weights }, &[input]),
+        _ => input,
+    })
 }

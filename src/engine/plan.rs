@@ -599,7 +599,13 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     let strip_bytes = |rows: usize| {
         let top = computed.position.y();
         let spans = regions.spans(graph, top..top.saturating_add(rows as i32));
-        let held = |n: Option<usize>| n.map_or(rows, |n| regions.span(&spans, n).len());
+        // Decode reads a zone from its top to its span's end: more than the
+        // span when a transform reads upwards (a flip holds its input whole).
+        let held = |n: Option<usize>| {
+            n.map_or(rows, |n| {
+                (regions.span(&spans, n).end - regions.rect(n).position.y()).max(0) as usize
+            })
+        };
         let nodes = graph.peak(|n| {
             pixel_bytes[n]
                 .saturating_mul(regions.rect(n).size.width())
@@ -615,7 +621,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         let message = format!(
             "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
              composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
-             (is a data window damaged?)",
+             (is a data window damaged? a flip, or a turn of 90 degrees or more, holds its \
+             whole input)",
             window.size.width(),
             window.size.height(),
         );

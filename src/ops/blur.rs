@@ -28,7 +28,7 @@ pub const BLUR: Operation = Operation {
 params! {
     pub struct Params {
         /// Radius in pixels: 2R + 1 taps.
-        radius: u32 [BLUR_RADIUS],
+        radius: u32 [BLUR_RADIUS] {pixels},
         /// gaussian or box.
         filter: Filter = "gaussian",
     }

@@ -8,7 +8,7 @@
 //! own); a cut reads its input shifted (`Op::request`). Rules:
 //! specs/ops.md, "crop, pad".
 
-use super::declare::{input, params, Args, Operation, Value};
+use super::declare::{input, params, Args, Length, Operation, Value};
 use crate::engine::graph::{intersection, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -40,8 +40,8 @@ pub const PAD: Operation = Operation {
 
 params! {
     pub struct CropParams {
-        /// The region: WxH+X+Y, or X0,Y0,X1,Y1 with X1 and Y1 included (oiiotool's geometry).
-        region: Region,
+        /// The region in pixels: WxH+X+Y, or X0,Y0,X1,Y1 with X1 and Y1 included (oiiotool's geometry).
+        region: Region {pixels},
         /// The display window becomes the region too.
         display: bool,
         /// Move the region to the origin; data and display window both become it (oiiotool's --cut).
@@ -52,7 +52,7 @@ params! {
 params! {
     pub struct PadParams {
         /// Pixels added on each side: N, or LEFT,TOP,RIGHT,BOTTOM.
-        by: Sides,
+        by: Sides {pixels},
         /// The display window grows too.
         display: bool,
     }
@@ -122,6 +122,23 @@ impl Value for Region {
     }
 }
 
+/// The whole pixels covering the region scaled (its start floored, its end
+/// ceiled, as a resize maps a data window), as X0,Y0,X1,Y1.
+impl Length for Region {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let Region(r) = Region::parse(text)?;
+        let low = |v: i32| (v as f64 * factor).floor() as i64;
+        let high = |v: i32| (v as f64 * factor).ceil() as i64 - 1;
+        Ok(format!(
+            "{},{},{},{}",
+            low(r.position.x()),
+            low(r.position.y()),
+            high(r.end().x()),
+            high(r.end().y())
+        ))
+    }
+}
+
 /// Pixels to add on each side: left, top, right, bottom.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Sides([i32; 4]);
@@ -145,6 +162,21 @@ impl Value for Sides {
             [l, t, r, b] => Ok(Sides([l, t, r, b])),
             _ => Err(bad()),
         }
+    }
+}
+
+/// Each side scaled and rounded.
+impl Length for Sides {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let Sides(sides) = Sides::parse(text)?;
+        let side = |v: i32| (v as f64 * factor).round() as i64;
+        Ok(format!(
+            "{},{},{},{}",
+            side(sides[0]),
+            side(sides[1]),
+            side(sides[2]),
+            side(sides[3])
+        ))
     }
 }
 

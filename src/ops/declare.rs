@@ -94,6 +94,24 @@ impl Operation {
     pub fn param(&self, name: &str) -> Option<&'static Param> {
         self.params.iter().find(|p| p.name == name)
     }
+
+    /// `args` for the image scaled by `factor` (`--proxy-scale`): each pixel
+    /// length, given or by default, scaled.
+    pub fn scale_lengths(&self, args: &mut Args, factor: f64) -> std::result::Result<(), String> {
+        for param in self.params {
+            let Some(scale) = param.pixels else { continue };
+            if let Some(text) = args
+                .values
+                .get(param.name)
+                .map(String::as_str)
+                .or(param.default)
+            {
+                let scaled = scale(text, factor).map_err(|m| format!("{}: {m}", param.name))?;
+                args.values.insert(param.name, scaled);
+            }
+        }
+        Ok(())
+    }
 }
 
 /// A parameter: `--NAME` on the command line (with `-` for `_`), `NAME` in
@@ -113,6 +131,38 @@ pub struct Param {
     pub file: bool,
     /// Parses and checks a value (bounds included).
     pub check: fn(&str) -> std::result::Result<(), String>,
+    /// A length in pixels (declared `{pixels}`): its value scaled by a
+    /// factor, as text (`--proxy-scale`).
+    pub pixels: Option<Scale>,
+}
+
+/// A value (as text) times a factor, as text.
+pub type Scale = fn(&str, f64) -> std::result::Result<String, String>;
+
+/// A parameter's type that can be a length in pixels: how its value scales
+/// with the image (`--proxy-scale`).
+pub trait Length: Value {
+    fn scaled(text: &str, factor: f64) -> std::result::Result<String, String>;
+}
+
+impl Length for f32 {
+    fn scaled(text: &str, factor: f64) -> std::result::Result<String, String> {
+        Ok(format!("{}", f32::parse(text)? as f64 * factor))
+    }
+}
+
+/// Counts of pixels (radii, reaches) round up: a proxy never cuts what the
+/// full size reaches.
+impl Length for u32 {
+    fn scaled(text: &str, factor: f64) -> std::result::Result<String, String> {
+        Ok(format!("{}", (u32::parse(text)? as f64 * factor).ceil()))
+    }
+}
+
+impl<T: Length> Length for Option<T> {
+    fn scaled(text: &str, factor: f64) -> std::result::Result<String, String> {
+        T::scaled(text, factor)
+    }
 }
 
 impl Param {
@@ -153,7 +203,7 @@ macro_rules! number {
         }
     )*};
 }
-number!(f32, u32);
+number!(f32, f64, u32);
 
 impl Value for bool {
     fn parse(text: &str) -> std::result::Result<Self, String> {
@@ -246,13 +296,15 @@ impl Args {
 }
 
 /// Declares an operation's parameters as one struct, each field with its
-/// doc comment (the help), an optional bound (`[crate::params::BOUND]`) and
-/// an optional default as it would be typed (`= "1.0"`); a field without a
+/// doc comment (the help), an optional bound (`[crate::params::BOUND]`),
+/// `{pixels}` for a length in pixels (scaled with the image by `--proxy-scale`;
+/// its type implements `Length`) and an optional default as it would be
+/// typed (`= "1.0"`); a field without a
 /// default is required unless it is an `Option` or a `bool` (a switch).
 /// Makes `PARAMS` (the declaration) and `read` (the values from `Args`).
 macro_rules! params {
     ($(#[doc = $sdoc:literal])* pub struct $name:ident {
-        $($(#[doc = $doc:literal])* $field:ident : $ty:ty $([$bound:path])? $(= $default:literal)?),* $(,)?
+        $($(#[doc = $doc:literal])* $field:ident : $ty:ty $([$bound:path])? $({$unit:ident})? $(= $default:literal)?),* $(,)?
     }) => {
         $(#[doc = $sdoc])*
         pub struct $name {
@@ -270,6 +322,7 @@ macro_rules! params {
                     choices: <$ty as $crate::ops::declare::Value>::CHOICES,
                     file: <$ty as $crate::ops::declare::Value>::FILE,
                     check: |text| params!(@parse $ty, text $(, $bound)?).map(drop),
+                    pixels: params!(@pixels $ty $(, $unit)?),
                 },
             )*];
 
@@ -283,6 +336,10 @@ macro_rules! params {
                 )*})
             }
         }
+    };
+    (@pixels $ty:ty) => { None };
+    (@pixels $ty:ty, pixels) => {
+        Some(<$ty as $crate::ops::declare::Length>::scaled as $crate::ops::declare::Scale)
     };
     (@default) => { None };
     (@default $default:literal) => { Some($default) };

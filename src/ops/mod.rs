@@ -20,6 +20,7 @@ pub mod shuffle;
 pub mod stereo;
 #[cfg(test)]
 pub mod testing;
+pub mod transform;
 pub mod vblur;
 pub mod zmerge;
 
@@ -63,6 +64,7 @@ pub const ALL: &[&Operation] = &[
     &crop::CROP,
     &crop::PAD,
     &reformat::REFORMAT,
+    &transform::TRANSFORM,
 ];
 
 pub fn find(name: &str) -> Option<&'static Operation> {
@@ -71,6 +73,47 @@ pub fn find(name: &str) -> Option<&'static Operation> {
 
 #[cfg(test)]
 mod tests {
+    /// A parameter is a length in pixels (`{pixels}`, scaled by `--proxy-scale`)
+    /// exactly when its help says it is in pixels: an op whose radius or
+    /// shift is not declared one fails here, not in a proxy render.
+    #[test]
+    fn every_length_in_pixels_is_declared_one() {
+        for op in super::ALL {
+            for param in op.params {
+                let says = param.help.to_lowercase().contains("pixel");
+                assert_eq!(
+                    says,
+                    param.pixels.is_some(),
+                    "op '{}' parameter '{}': its help {} pixels but it is {}declared {{pixels}}",
+                    op.name,
+                    param.name,
+                    if says {
+                        "speaks of"
+                    } else {
+                        "does not speak of"
+                    },
+                    if param.pixels.is_some() { "" } else { "not " },
+                );
+            }
+        }
+    }
+
+    /// Each kind of length scales as specs/ops.md ("--proxy-scale") says.
+    #[test]
+    fn lengths_scale_by_their_kind() {
+        let scaled = |op: &str, name: &str, text: &str, factor: f64| {
+            let param = super::find(op).unwrap().param(name).unwrap();
+            (param.pixels.unwrap())(text, factor).unwrap()
+        };
+        assert_eq!(scaled("blur", "radius", "5", 0.5), "3");
+        assert_eq!(scaled("stereo", "disparity", "5", 0.5), "2.5");
+        assert_eq!(scaled("crop", "region", "41x30+3-5", 0.5), "1,-3,21,12");
+        assert_eq!(scaled("pad", "by", "1,2,3,4", 0.5), "1,1,2,2");
+        assert_eq!(scaled("resize", "size", "1920x1081", 0.5), "960x541");
+        assert_eq!(scaled("reformat", "format", "HD_1080", 0.25), "480x270");
+        assert_eq!(scaled("transform", "translate", "3,-1", 0.5), "1.5,-0.5");
+    }
+
     /// specs/job-format.md's table of op nodes lists every operation and each
     /// of its parameters (a row saying "as merge" shares merge's keys).
     #[test]

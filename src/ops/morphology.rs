@@ -32,7 +32,7 @@ pub const DILATE: Operation = Operation {
 params! {
     pub struct Params {
         /// Radius of the disc in pixels.
-        radius: u32 [MORPH_RADIUS],
+        radius: u32 [MORPH_RADIUS] {pixels},
         /// 1 - alpha afterwards.
         invert: bool,
     }

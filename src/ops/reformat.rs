@@ -5,7 +5,7 @@
 //! by Nuke's names or WxH. Rules: specs/ops.md, "reformat".
 
 use super::crop::Crop;
-use super::declare::{input, params, Args, Operation, Value};
+use super::declare::{input, params, Args, Length, Operation, Value};
 use super::resize::{passes, Filter, Fit, Size, Target};
 use crate::engine::graph::{GraphBuilder, NodeId};
 use exr::meta::attribute::IntegerBounds;
@@ -27,8 +27,8 @@ pub const REFORMAT: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH.
-        format: Format,
+        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH pixels.
+        format: Format {pixels},
         /// width, height (aspect kept), fit (inside), fill (covering) or distort.
         fit: Fit = "width",
         /// Centre the image in the format (else at its top left corner).
@@ -38,23 +38,32 @@ params! {
     }
 }
 
-/// Nuke's built-in formats (their pixel aspect ratios are not written).
-pub const FORMATS: &[(&str, usize, usize)] = &[
-    ("PC_Video", 640, 480),
-    ("NTSC", 720, 486),
-    ("PAL", 720, 576),
-    ("HD_720", 1280, 720),
-    ("HD_1080", 1920, 1080),
-    ("UHD_4K", 3840, 2160),
-    ("1K_Super_35(full-ap)", 1024, 778),
-    ("2K_Super_35(full-ap)", 2048, 1556),
-    ("4K_Super_35(full-ap)", 4096, 3112),
-    ("2K_DCP", 2048, 1080),
-    ("4K_DCP", 4096, 2160),
-    ("square_256", 256, 256),
-    ("square_512", 512, 512),
-    ("square_1K", 1024, 1024),
-    ("square_2K", 2048, 2048),
+/// Nuke's built-in formats: name, width, height and pixel aspect ratio
+/// (sources: specs/ops.md, "reformat"). The ratio is not applied to the
+/// resize nor written to the header (`--attrib pixelAspectRatio=R` writes it).
+pub const FORMATS: &[(&str, usize, usize, f32)] = &[
+    ("PC_Video", 640, 480, 1.0),
+    ("NTSC", 720, 486, 0.91),
+    ("PAL", 720, 576, 1.09),
+    ("NTSC_16:9", 720, 486, 1.21),
+    ("PAL_16:9", 720, 576, 1.46),
+    ("HD_720", 1280, 720, 1.0),
+    ("HD_1080", 1920, 1080, 1.0),
+    // Nuke 7's name for HD_1080.
+    ("HD", 1920, 1080, 1.0),
+    ("UHD_4K", 3840, 2160, 1.0),
+    ("1K_Super_35(full-ap)", 1024, 778, 1.0),
+    ("1K_Cinemascope", 914, 778, 2.0),
+    ("2K_Super_35(full-ap)", 2048, 1556, 1.0),
+    ("2K_Cinemascope", 1828, 1556, 2.0),
+    ("2K_DCP", 2048, 1080, 1.0),
+    ("4K_Super_35(full-ap)", 4096, 3112, 1.0),
+    ("4K_Cinemascope", 3656, 3112, 2.0),
+    ("4K_DCP", 4096, 2160, 1.0),
+    ("square_256", 256, 256, 1.0),
+    ("square_512", 512, 512, 1.0),
+    ("square_1K", 1024, 1024, 1.0),
+    ("square_2K", 2048, 2048, 1.0),
 ];
 
 /// A format's size: a name from `FORMATS` (any case) or WxH.
@@ -67,7 +76,7 @@ impl Value for Format {
             .iter()
             .find(|f| f.0.eq_ignore_ascii_case(text.trim()));
         match named {
-            Some(&(_, width, height)) => Ok(Format(Size { width, height })),
+            Some(&(_, width, height, _)) => Ok(Format(Size { width, height })),
             None => Size::parse(text).map(Format).map_err(|_| {
                 let names: Vec<&str> = FORMATS.iter().map(|f| f.0).collect();
                 format!(
@@ -76,6 +85,14 @@ impl Value for Format {
                 )
             }),
         }
+    }
+}
+
+/// A named format's size scaled as a WxH one.
+impl Length for Format {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let Format(size) = Format::parse(text)?;
+        Size::scaled(&format!("{}x{}", size.width, size.height), factor)
     }
 }
 
@@ -103,5 +120,23 @@ mod tests {
         assert_eq!(Format::parse("uhd_4k"), size(3840, 2160));
         assert_eq!(Format::parse("1000x500"), size(1000, 500));
         assert!(Format::parse("HD_1081").unwrap_err().contains("HD_1080"));
+        assert_eq!(Format::parse("hd"), size(1920, 1080));
+        assert_eq!(Format::parse("2K_Cinemascope"), size(1828, 1556));
+        assert_eq!(Format::parse("PAL_16:9"), size(720, 576));
+        // Nuke's ratios, as its Python guide prints them (0.91, 1.09) and
+        // its anamorphic formats have them.
+        let ratio = |name: &str| FORMATS.iter().find(|f| f.0 == name).unwrap().3;
+        assert_eq!(
+            [
+                "NTSC",
+                "PAL",
+                "NTSC_16:9",
+                "PAL_16:9",
+                "4K_Cinemascope",
+                "HD_1080"
+            ]
+            .map(ratio),
+            [0.91, 1.09, 1.21, 1.46, 2.0, 1.0]
+        );
     }
 }

@@ -5,7 +5,7 @@
 //! vertical pass holds a few rows of the horizontal one, never the image.
 //! Formulas: specs/ops.md, "resize".
 
-use super::declare::{choice, input, params, Args, Operation, Value};
+use super::declare::{choice, input, params, Args, Length, Operation, Value};
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
@@ -29,8 +29,8 @@ pub const RESIZE: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// The new display window's size, WxH.
-        size: Option<Size>,
+        /// The new display window's size in pixels, WxH.
+        size: Option<Size> {pixels},
         /// Or a factor for both sides (0.5: half size), sides rounded.
         scale: Option<f32> [RESIZE_SCALE],
         /// box, triangle, gaussian, mitchell or lanczos3.
@@ -76,6 +76,15 @@ impl Value for Size {
                 "size '{text}': expected WxH, 1 to 1048576 pixels each (1920x1080)"
             )),
         }
+    }
+}
+
+/// Each side scaled and rounded, at least 1 (as `--scale` does).
+impl Length for Size {
+    fn scaled(text: &str, factor: f64) -> Result<String, String> {
+        let size = Size::parse(text)?;
+        let side = |v: usize| ((v as f64 * factor).round() as usize).max(1);
+        Ok(format!("{}x{}", side(size.width), side(size.height)))
     }
 }
 
@@ -166,7 +175,7 @@ impl Value for Filter {
 
 impl Filter {
     /// OpenImageIO's default width, in pixels of the smaller image.
-    fn width(self) -> f32 {
+    pub fn width(self) -> f32 {
         match self {
             Filter::Box => 1.0,
             Filter::Triangle => 2.0,
@@ -177,7 +186,7 @@ impl Filter {
     }
 
     /// The filter stretched to `width`, at `x` (OpenImageIO's 1-D forms).
-    fn at(self, x: f32, width: f32) -> f32 {
+    pub fn at(self, x: f32, width: f32) -> f32 {
         let x = x.abs();
         let unit = x * 2.0 / width;
         match self {

@@ -32,10 +32,10 @@ pub const STEREO: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// The eye to make: pixels move right for the left eye, left for the right.
+        /// The eye to make: the image moves right for the left eye, left for the right.
         eye: Eye,
         /// Shift in pixels at depth 1: a pixel at depth Z moves K / Z.
-        disparity: f32 [DISPARITY],
+        disparity: f32 [DISPARITY] {pixels},
         /// The depth channel.
         z_channel: String = "Z",
     }

@@ -37,13 +37,13 @@ pub const VBLUR: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// Scales the displacement: 0 for none, 1 as rendered.
-        scale: f32 [VBLUR_SCALE] = "1",
-        /// The x and y displacement channels (y down, in pixels).
+        /// Scales the displacement, in pixels: 0 for none, 1 as rendered.
+        scale: f32 [VBLUR_SCALE] {pixels} = "1",
+        /// The x and y displacement channels (y down).
         vectors: Vectors = "forward.u,forward.v",
-        /// Rows a streak may reach; without it, a first pass over the vectors
+        /// Rows (pixels) a streak may reach; without it, a first pass over the vectors
         /// measures it. A longer streak is an error, never cut.
-        max_displacement: Option<u32> [MAX_DISPLACEMENT],
+        max_displacement: Option<u32> [MAX_DISPLACEMENT] {pixels},
     }
 }
 

@@ -199,19 +199,7 @@ fn resize_by_a_scale_rounds_the_sides_and_the_job_node_agrees() {
     let got = read_image(&out);
     assert_eq!(got.display, (22, 17));
     assert_close(&got, &reference(&img, "lanczos3", (22, 17)), "scale 0.55");
-    let job = dir.path().join("job.toml");
-    let from_job = dir.path().join("job.exr");
-    std::fs::write(
-        &job,
-        format!(
-            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"small\"\nop = \"resize\"\nscale = 0.55\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"small\"]\n",
-            s(&input),
-            s(&from_job)
-        ),
-    )
-    .unwrap();
-    let ran = run(&["run", s(&job), "--quiet"]);
-    assert!(ran.status.success(), "{}", stderr(&ran));
+    let from_job = one_op_job(dir.path(), &input, "op = \"resize\"\nscale = 0.55");
     assert_identical(&read_image(&from_job), &got);
 }
 
@@ -227,28 +215,22 @@ fn bad_sizes_and_both_or_neither_are_refused_with_a_message() {
         exr::meta::attribute::LineOrder::Increasing,
     );
     let out = dir.path().join("o.exr");
-    for (args, says) in [
-        (vec!["--size", "0x10"], "expected WxH"),
-        (vec!["--size", "640"], "expected WxH"),
-        (vec!["--scale", "0"], "scale"),
-        (vec![], "one of size (WxH) and scale"),
-        (
-            vec!["--size", "4x4", "--scale", "2"],
-            "one of size (WxH) and scale",
-        ),
-        (vec!["--size", "4x4", "--filter", "sinc"], "unknown filter"),
-    ] {
-        let mut all = vec!["resize", s(&input), "-o", s(&out)];
-        all.extend(&args);
-        let result = run(&all);
-        assert!(!result.status.success(), "{args:?} accepted");
-        assert!(
-            stderr(&result).contains(says),
-            "{args:?}: {}",
-            stderr(&result)
-        );
-        assert!(!out.exists(), "{args:?} wrote a file");
-    }
+    assert_refused(
+        "resize",
+        &input,
+        &out,
+        &[
+            (&["--size", "0x10"], "expected WxH"),
+            (&["--size", "640"], "expected WxH"),
+            (&["--scale", "0"], "scale"),
+            (&[], "one of size (WxH) and scale"),
+            (
+                &["--size", "4x4", "--scale", "2"],
+                "one of size (WxH) and scale",
+            ),
+            (&["--size", "4x4", "--filter", "sinc"], "unknown filter"),
+        ],
+    );
 }
 
 /// One half step of the larger, or 2^-16 of the image's peak (see

@@ -49,9 +49,9 @@ params! {
         focus: f32 [FOCUS],
         /// Blur radius in pixels of what is far behind the focus plane:
         /// radius = scale * |1 - focus / Z|.
-        scale: f32 [DEFOCUS_SCALE],
-        /// Largest radius (the rows read above and below).
-        max_radius: u32 [MAX_RADIUS],
+        scale: f32 [DEFOCUS_SCALE] {pixels},
+        /// Largest radius in pixels (the rows read above and below).
+        max_radius: u32 [MAX_RADIUS] {pixels},
         /// disc, hexagon, or N-gon (5-gon, 8-gon...).
         aperture: Aperture = "disc",
         /// The depth channel.

@@ -768,6 +768,42 @@ sys.stdout.buffer.write(struct.pack('>II', w, h) + b''.join(rows))
     Some((w, h, pixels))
 }
 
+/// Runs a job file in `dir` reading `input` through one op node (its keys
+/// `keys`, as TOML lines) and returns the file it wrote.
+pub fn one_op_job(dir: &Path, input: &Path, keys: &str) -> PathBuf {
+    let job = dir.join("job.toml");
+    let output = dir.join("job.exr");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"op\"\n{keys}\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"op\"]\n",
+            s(input),
+            s(&output)
+        ),
+    )
+    .unwrap();
+    let ran = run(&["run", s(&job), "--quiet"]);
+    assert!(ran.status.success(), "{}", stderr(&ran));
+    output
+}
+
+/// `exrcomp OP INPUT -o OUTPUT ARGS...` fails for each case, saying what
+/// it says, and writes nothing.
+pub fn assert_refused(op: &str, input: &Path, output: &Path, cases: &[(&[&str], &str)]) {
+    for &(args, says) in cases {
+        let mut all = vec![op, s(input), "-o", s(output)];
+        all.extend(args);
+        let result = run(&all);
+        assert!(!result.status.success(), "{args:?} accepted");
+        assert!(
+            stderr(&result).contains(says),
+            "{args:?}: {}",
+            stderr(&result)
+        );
+        assert!(!output.exists(), "{args:?} wrote a file");
+    }
+}
+
 /// Runs exrcomp with `args`, which must succeed.
 pub fn ok(args: &[&str]) {
     let out = run(args);

@@ -1,0 +1,356 @@
+//! `transform`: whole-image references computed here (whole-pixel moves,
+//! quarter and half turns and flips exact; any angle against bilinear
+//! sampling at the inverse-mapped point), whatever the strip height;
+//! oiiotool's `--flip`, `--flop` and `--rotate`; the job node; bad values.
+
+use crate::common::*;
+use exr::meta::attribute::LineOrder;
+use std::path::Path;
+
+fn transform(input: &Path, output: &Path, args: &[&str]) {
+    let mut all = vec!["transform", s(input), "-o", s(output), "--quiet"];
+    all.extend(args);
+    let out = run(&all);
+    assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+}
+
+/// A random half RGBA image of `w` x `h`, display window the same, as a ZIP file.
+fn plate(dir: &Path, w: usize, h: usize) -> (std::path::PathBuf, Img) {
+    let input = dir.join("in.exr");
+    let mut img = random_rgba(11, 0, 0, w, h, Kind::Half, false);
+    img.display = (w, h);
+    write_image(&input, &img, compression("zip"), LineOrder::Increasing);
+    (input, img)
+}
+
+/// `img` moved: output pixel (x, y) of window `(x0, y0, w, h)` is input
+/// pixel `from(x, y)`, black where that is outside it.
+fn moved(img: &Img, (x0, y0, w, h): Window, from: impl Fn(i32, i32) -> (i32, i32)) -> Img {
+    let mut out = Img {
+        x: x0,
+        y: y0,
+        width: w,
+        height: h,
+        channels: Default::default(),
+        ..img.clone()
+    };
+    for (name, plane) in &img.channels {
+        let mut samples = plane.zeros_like(w * h);
+        for i in 0..w * h {
+            let (x, y) = (x0 + (i % w) as i32, y0 + (i / w) as i32);
+            let (sx, sy) = from(x, y);
+            if let Some(j) = img.index(sx, sy) {
+                samples.copy_from(i, plane, j);
+            }
+        }
+        out.channels.insert(name.clone(), samples);
+    }
+    out
+}
+
+/// A data window: x, y, width, height.
+type Window = (i32, i32, usize, usize);
+
+/// The input pixel an output pixel is.
+type Source = Box<dyn Fn(i32, i32) -> (i32, i32)>;
+
+#[test]
+fn moves_turns_and_flips_are_exact_at_any_strip_height() {
+    let dir = tempfile::tempdir().unwrap();
+    let (w, h) = (40, 30);
+    let (input, img) = plate(dir.path(), w, h);
+    let out = dir.path().join("out.exr");
+    let (wi, hi) = (w as i32, h as i32);
+    let cases: Vec<(Vec<&str>, Window, Source)> = vec![
+        // Nuke's y is up: translate 5,3 moves 3 rows up.
+        (
+            vec!["--translate", "5,3"],
+            (5, -3, w, h),
+            Box::new(|x, y| (x - 5, y + 3)),
+        ),
+        (
+            vec!["--flip"],
+            (0, 0, w, h),
+            Box::new(move |x, y| (x, hi - 1 - y)),
+        ),
+        (
+            vec!["--flop"],
+            (0, 0, w, h),
+            Box::new(move |x, y| (wi - 1 - x, y)),
+        ),
+        (
+            vec!["--rotate", "180"],
+            (0, 0, w, h),
+            Box::new(move |x, y| (wi - 1 - x, hi - 1 - y)),
+        ),
+        // Counter-clockwise about (20, 15): the top row becomes the left
+        // column, its right end at the top.
+        (
+            vec!["--rotate", "90"],
+            (5, -5, h, w),
+            Box::new(move |x, y| (34 - y, x - 5)),
+        ),
+        (
+            vec!["--rotate", "-90"],
+            (5, -5, h, w),
+            Box::new(move |x, y| (y + 5, 34 - x)),
+        ),
+    ];
+    for (args, window, from) in &cases {
+        let expected = moved(&img, *window, from);
+        for filter in ["impulse", "triangle"] {
+            for strip in ["1", "7", "64"] {
+                let mut all = args.clone();
+                all.extend(["--filter", filter, "--strip-rows", strip]);
+                transform(&input, &out, &all);
+                let got = read_image(&out);
+                assert_eq!(got.display, (w, h), "the display window is kept");
+                assert_identical(&got, &expected);
+            }
+        }
+    }
+    assert_peers_read(&out);
+}
+
+/// Bilinear interpolation of channel `plane` of `img` at pixel coordinates
+/// (u, v), black outside its data window.
+fn bilinear(img: &Img, plane: &Samples, u: f64, v: f64) -> f64 {
+    let (s, t) = (u - 0.5, v - 0.5);
+    let (x0, y0) = (s.floor() as i32, t.floor() as i32);
+    let (fx, fy) = (s - x0 as f64, t - y0 as f64);
+    let at = |x, y| img.index(x, y).map_or(0.0, |i| plane.get_f32(i) as f64);
+    (1.0 - fy) * ((1.0 - fx) * at(x0, y0) + fx * at(x0 + 1, y0))
+        + fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1))
+}
+
+#[test]
+fn any_angle_is_bilinear_sampling_at_the_inverse_mapped_point() {
+    let dir = tempfile::tempdir().unwrap();
+    let (w, h) = (37, 29);
+    let (input, img) = plate(dir.path(), w, h);
+    let out = dir.path().join("out.exr");
+    let (theta, tx, ty, scale) = (23.0f64, 1.5, -2.25, 0.9);
+    let args = [
+        "--rotate",
+        "23",
+        "--translate",
+        "1.5,-2.25",
+        "--scale",
+        "0.9",
+        "--filter",
+        "triangle",
+    ];
+    let mut first = None;
+    for strip in ["1", "5", "64"] {
+        transform(
+            &input,
+            &out,
+            &[&args[..], &["--strip-rows", strip]].concat(),
+        );
+        let got = read_image(&out);
+        // The same bytes whatever the strips.
+        match &first {
+            None => first = Some(got.clone()),
+            Some(f) => assert_identical(&got, f),
+        }
+    }
+    let got = first.unwrap();
+    // The inverse map with y up about the display window's middle.
+    let (cx, cy) = (w as f64 / 2.0, h as f64 / 2.0);
+    let (sin, cos) = theta.to_radians().sin_cos();
+    let mut nonzero = 0;
+    for (name, plane) in &got.channels {
+        for i in 0..got.width * got.height {
+            let (x, y) = (
+                got.x + (i % got.width) as i32,
+                got.y + (i / got.width) as i32,
+            );
+            let (px, py) = (
+                x as f64 + 0.5 - tx - cx,
+                (h as f64 - y as f64 - 0.5) - ty - cy,
+            );
+            let (ux, uy) = (
+                (cos * px + sin * py) / scale,
+                (-sin * px + cos * py) / scale,
+            );
+            let (u, v) = (ux + cx, h as f64 - (uy + cy));
+            let expected = bilinear(&img, &img.channels[name], u, v);
+            let value = plane.get_f32(i) as f64;
+            // One half step (the output's rounding) plus f32 sums.
+            let step = (expected.abs().max(1e-3)).log2().floor();
+            assert!(
+                (value - expected).abs() <= 2f64.powf(step - 10.0) + 1e-5,
+                "{name} at ({x}, {y}): {value} against {expected}"
+            );
+            nonzero += (value != 0.0) as usize;
+        }
+    }
+    assert!(nonzero > w * h, "{nonzero} samples not black");
+    // The data window: the turned window's bounding box.
+    let corners = [
+        (0.0, 0.0),
+        (w as f64, 0.0),
+        (0.0, h as f64),
+        (w as f64, h as f64),
+    ];
+    let mapped: Vec<(f64, f64)> = corners
+        .iter()
+        .map(|&(x, y)| {
+            let (px, py) = (scale * (x - cx), scale * ((h as f64 - y) - cy));
+            let (qx, qy) = (cos * px - sin * py + cx + tx, sin * px + cos * py + cy + ty);
+            (qx, h as f64 - qy)
+        })
+        .collect();
+    let x0 = mapped.iter().map(|p| p.0).fold(f64::MAX, f64::min).floor() as i32;
+    let y1 = mapped.iter().map(|p| p.1).fold(f64::MIN, f64::max).ceil() as i32;
+    assert_eq!((got.x, got.y + got.height as i32), (x0, y1));
+    assert_peers_read(&out);
+}
+
+/// oiiotool flips and flops exactly as `--flip` and `--flop` do; its
+/// `--rotate` (degrees clockwise) is ours negated, and its `--warp` a
+/// matrix. With `recompute_roi=1` its data window is the pixels whose
+/// centres the turned image covers, ours the whole pixels it touches (a
+/// pixel wider at some edges, holding the filter's partial coverage), so
+/// ours holds theirs; where both have pixels every sample is within one
+/// half-float step of the larger, or 2^-16 near zero (measured: off by one
+/// step at most above 0.01, the f32 sums of the taps rounded apart).
+#[test]
+fn flips_flops_rotations_and_warps_agree_with_oiiotool() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (input, _) = plate(dir.path(), 48, 36);
+    let oiio = |args: &[&str], out: &Path| {
+        succeed(
+            std::process::Command::new(&oiiotool)
+                .arg(&input)
+                .args(args)
+                .arg("-o")
+                .arg(out),
+        );
+        read_image(out)
+    };
+    let ours = dir.path().join("ours.exr");
+    let theirs = dir.path().join("theirs.exr");
+    for flag in ["--flip", "--flop"] {
+        transform(&input, &ours, &[flag, "--filter", "impulse"]);
+        assert_identical(&read_image(&ours), &oiio(&[flag], &theirs));
+    }
+    for filter in ["triangle", "lanczos3"] {
+        for (args, theirs_args) in [
+            (
+                vec!["--rotate", "-30"],
+                vec!["--rotate:filter=F:recompute_roi=1", "30"],
+            ),
+            (
+                vec!["--rotate", "12.5"],
+                vec!["--rotate:filter=F:recompute_roi=1", "-12.5"],
+            ),
+            // Scale 1.25 about the top left corner (0, 36 with y up), then
+            // 3.5 right and 2 up.
+            (
+                vec![
+                    "--scale",
+                    "1.25",
+                    "--center",
+                    "0,36",
+                    "--translate",
+                    "3.5,2",
+                ],
+                vec![
+                    "--warp:filter=F:recompute_roi=1",
+                    "1.25,0,0,0,1.25,0,3.5,-2,1",
+                ],
+            ),
+        ] {
+            let what = format!("{args:?} {filter}");
+            transform(&input, &ours, &[&args[..], &["--filter", filter]].concat());
+            let option = theirs_args[0].replace("=F", &format!("={filter}"));
+            let expected = oiio(&[&option, theirs_args[1]], &theirs);
+            let got = read_image(&ours);
+            let mut compared = 0;
+            for (name, e) in &expected.channels {
+                let plane = &got.channels[name];
+                for j in 0..expected.width * expected.height {
+                    let x = expected.x + (j % expected.width) as i32;
+                    let y = expected.y + (j / expected.width) as i32;
+                    let i = got
+                        .index(x, y)
+                        .unwrap_or_else(|| panic!("{what}: ({x}, {y}) missing"));
+                    let (a, b) = (plane.get_f32(i), e.get_f32(j));
+                    let step = 2f32
+                        .powi(a.abs().max(b.abs()).max(2f32.powi(-14)).log2().floor() as i32 - 10);
+                    assert!(
+                        (a - b).abs() <= step.max(2f32.powi(-16)),
+                        "{what}: {name} at ({x}, {y}): {a} against {b}"
+                    );
+                    compared += 1;
+                }
+            }
+            assert!(
+                compared > 4 * 48 * 36,
+                "{what}: {compared} samples compared"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_job_node_agrees_and_bad_values_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (input, _) = plate(dir.path(), 16, 12);
+    let out = dir.path().join("cli.exr");
+    transform(&input, &out, &["--rotate", "10", "--center", "4,4"]);
+    let from_job = one_op_job(
+        dir.path(),
+        &input,
+        "op = \"transform\"\nrotate = 10\ncenter = \"4,4\"",
+    );
+    assert_identical(&read_image(&from_job), &read_image(&out));
+    let bad = dir.path().join("bad.exr");
+    assert_refused(
+        "transform",
+        &input,
+        &bad,
+        &[
+            (&["--scale", "0"], "scale must not be 0"),
+            (&["--translate", "1,2,3"], "expected X,Y"),
+            (&["--rotate", "nan"], "rotate must be a number"),
+            (&["--filter", "sinc"], "unknown filter"),
+        ],
+    );
+}
+
+/// A flip reads its input's last rows first: it holds the whole input, and
+/// a frame that would hold more than the strip limit is refused before
+/// anything is read or written. A flop streams.
+#[test]
+fn a_flip_of_a_wide_plate_is_refused_and_a_flop_streams() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("wide.exr");
+    generate(&input, "proxy", (16384, 704), &[]);
+    let out = dir.path().join("out.exr");
+    let flipped = run(&["transform", s(&input), "-o", s(&out), "--flip"]);
+    assert_eq!(flipped.status.code(), Some(3), "{}", stderr(&flipped));
+    let message = stderr(&flipped);
+    assert!(
+        message.contains("wide.exr") && message.contains("a flip"),
+        "{message}"
+    );
+    assert!(!out.exists());
+    let flopped = run(&[
+        "transform",
+        s(&input),
+        "-o",
+        s(&out),
+        "--flop",
+        "--filter",
+        "impulse",
+        "--json",
+    ]);
+    assert!(flopped.status.success(), "{}", stderr(&flopped));
+    let summary: serde_json::Value = serde_json::from_slice(&flopped.stdout).unwrap();
+    assert!(summary["peak_rss_bytes"].as_u64().unwrap() < 200 << 20);
+}
