@@ -383,6 +383,51 @@ fn a_luminance_image_over_a_smaller_plate_reads_the_plate_with_its_own_window() 
         assert_eq!(&half_bits(&output, name), luminance, "{name}");
     }
 }
+/// A crop keeps fewer rows or columns than the image: the conversion still
+/// reads the lines and pixels beyond the crop that its filters reach (it had
+/// read rows it did not hold and panicked), so the result is the crop of the
+/// whole image's RGB, bit for bit, wherever the strips fall.
+#[test]
+fn a_crop_of_a_luminance_chroma_image_is_the_crop_of_its_rgb() {
+    let input = sample("YcaOffset.exr");
+    let image = raw(&input);
+    let expected = reference_rgb(&image);
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("crop.exr");
+    // Rows off the top and bottom, a corner, one column, the bottom right;
+    // then cut to the origin, and strips of one row.
+    for (region, cut, strip) in [
+        ("-6,9,31,30", false, "64"),
+        ("-3,5,4,11", false, "64"),
+        ("1,4,1,33", false, "64"),
+        ("20,25,31,33", false, "64"),
+        ("-3,5,4,11", true, "64"),
+        ("0,6,17,28", false, "1"),
+    ] {
+        let mut args = vec!["crop", s(&input), "--region", region, "-o", s(&output)];
+        args.extend(["--strip-rows", strip, "-q"]);
+        if cut {
+            args.push("--cut");
+        }
+        ok(&args);
+        let bounds: Vec<i32> = region.split(',').map(|v| v.parse().unwrap()).collect();
+        let (x0, y0, x1, y1) = (bounds[0], bounds[1], bounds[2], bounds[3]);
+        for (c, name) in ["R", "G", "B"].iter().enumerate() {
+            let mut crop = Vec::new();
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let at = (y - image.y) as usize * image.width + (x - image.x) as usize;
+                    crop.push(expected[c][at]);
+                }
+            }
+            assert!(
+                half_bits(&output, name) == crop,
+                "{name} of {region} (cut {cut}, strips of {strip}) differs"
+            );
+        }
+    }
+}
+
 #[test]
 fn mt_tam_north_reads_carries_and_composites() {
     let Some(path) = public_image("../exr-images-more/LuminanceChroma/MtTamNorth.exr") else {
