@@ -652,9 +652,8 @@ fn band(header: &mut Header, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
     let window = header.data_window();
     let (top, bottom) = (window.position.y(), window.end().y());
     let lines = header.compression.scan_lines_per_block() as i32;
-    let y1 = y1.min(bottom);
     let on_grid = |y: i32| (y - top) % lines == 0 || y == bottom;
-    if y0 < top || y0 >= y1 || !on_grid(y0) || !on_grid(y1) {
+    if y0 < top || y0 >= y1 || y1 > bottom || !on_grid(y0) || !on_grid(y1) {
         return Err(Error::usage(format!(
             "--rows {y0}-{y1}: a band must lie in rows {top}-{bottom} and start and end on \
              {lines}-line block boundaries counted from row {top}"
