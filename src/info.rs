@@ -35,19 +35,14 @@ struct Facts {
 /// missing or not decoding.
 fn facts(path: &Path) -> Result<Facts> {
     let file = ExrFile::open(path, None)?;
-    let requirements = &file.meta.requirements;
-    let flags = [
-        (requirements.is_single_layer_and_tiled, 0x200),
-        (requirements.has_long_names, 0x400),
-        (
-            requirements.has_deep_data && !requirements.has_multiple_layers,
-            0x800,
-        ),
-        (requirements.has_multiple_layers, 0x1000),
-    ]
-    .iter()
-    .filter(|(set, _)| *set)
-    .fold(0, |flags, (_, bit)| flags | bit);
+    // The version field as the file holds it, as exrheader prints it: the
+    // crate's requirements say what it would write, which for a multi-part
+    // file with a deep part lacks the non-image bit.
+    let mut field = [0u8; 8];
+    std::fs::File::open(path)
+        .and_then(|mut f| std::io::Read::read_exact(&mut f, &mut field))
+        .map_err(|e| file.error(format!("cannot read its version field: {e}")))?;
+    let word = u32::from_le_bytes(field[4..8].try_into().expect("4 bytes"));
     // The crate's header also has what it computes: its `chunkCount` is
     // shown only where the file declares one, its `type` always (as OpenEXR,
     // which gives every part a type, and exrheader show it).
@@ -89,8 +84,8 @@ fn facts(path: &Path) -> Result<Facts> {
     }
     Ok(Facts {
         bytes: file.file_len(),
-        version: requirements.file_format_version,
-        flags,
+        version: (word & 0xff) as u8,
+        flags: word & !0xff,
         parts,
     })
 }
