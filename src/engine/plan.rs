@@ -464,8 +464,14 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             inputs[i].meta.headers.len()
         )));
     }
+    // OpenEXR allows subsampled channels in scanline parts only.
+    let tiled = header.blocks.has_tiles().then(|| {
+        "OpenEXR allows them in scanline parts only, so the output cannot be tiled: drop --tile \
+         (or the write node's tile)"
+            .to_string()
+    });
     if let Some(message) = crate::io::subsampling::any(&header)
-        .then(|| crate::io::subsampling::refused(header.compression))
+        .then(|| tiled.or_else(|| crate::io::subsampling::refused(header.compression)))
         .flatten()
     {
         let source = match job.header_base {

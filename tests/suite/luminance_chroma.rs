@@ -330,6 +330,71 @@ fn b44_of_subsampled_channels_is_refused_naming_the_file_and_the_compression() {
     }
 }
 
+/// OpenEXR allows subsampled channels in scanline parts only: a tiled output
+/// of them (--tile, or a write node's tile) is refused before anything is
+/// written (it had written a file no reader takes, or panicked). Composited
+/// over a tiled plate they are RGB, and the output follows the plate's tiles.
+#[test]
+fn a_tiled_output_of_subsampled_channels_is_refused_and_a_tiled_plate_takes_their_rgb() {
+    let input = sample("YcaOffset.exr");
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("out.exr");
+    let job = dir.path().join("job.toml");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"in\"]\ntile = \"16x16\"\n",
+            s(&input),
+            s(&output)
+        ),
+    )
+    .unwrap();
+    for args in [
+        vec!["transcode", s(&input), "-o", s(&output), "--tile", "16"],
+        vec!["transcode", s(&input), "-o", s(&output), "--tile", "64"],
+        vec!["run", s(&job)],
+    ] {
+        let out = run(&args);
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {message}");
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        assert!(
+            message.contains("YcaOffset.exr") && message.contains("scanline parts only"),
+            "{message}"
+        );
+        assert!(!output.exists());
+    }
+    let (plain, plate) = (dir.path().join("plain.exr"), dir.path().join("plate.exr"));
+    ok(&[
+        "generate",
+        s(&plain),
+        "--width",
+        "40",
+        "--height",
+        "40",
+        "-q",
+    ]);
+    ok(&[
+        "transcode",
+        s(&plain),
+        "-o",
+        s(&plate),
+        "--tile",
+        "16",
+        "-q",
+    ]);
+    ok(&["over", s(&input), s(&plate), "-o", s(&output), "-q"]);
+    let out = run(&["info", s(&output)]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(text.contains("tiles (type tiledesc)"), "{text}");
+    assert!(
+        text.contains("sampling 1 1") && !text.contains("sampling 2 2"),
+        "{text}"
+    );
+    common::assert_peers_read(&output);
+}
+
 #[test]
 fn operations_read_luminance_chroma_as_openexrs_rgba_interface_does() {
     let input = sample("YcaOffset.exr");
