@@ -370,6 +370,23 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
         ));
     }
+    // OpenEXR's coordinates (ImfHeader.cpp's sanity check, the exr crate's):
+    // an input far out, resized, can leave them.
+    let limit = i64::from(i32::MAX / 2);
+    let (x0, y0) = (
+        i64::from(window.position.x()),
+        i64::from(window.position.y()),
+    );
+    let (x1, y1) = (
+        x0 + window.size.width() as i64 - 1,
+        y0 + window.size.height() as i64 - 1,
+    );
+    if [x0, y0].iter().any(|&v| v <= -limit) || [x1, y1].iter().any(|&v| v >= limit) {
+        return Err(located(format!(
+            "the result's data window ({x0} {y0}) - ({x1} {y1}) would not fit OpenEXR's 32-bit \
+             coordinates (between -{limit} and {limit}, excluded)"
+        )));
+    }
 
     let mut header = match job.header_base {
         HeaderBase::Input(i) => header_of(i).clone(),
