@@ -7,6 +7,7 @@
 use crate::error::Result;
 use crate::io::reader::ExrFile;
 use crate::io::standard_attributes::attributes;
+use crate::io::text::Utf8Text;
 use exr::math::{RoundingMode, Vec2};
 use exr::meta::attribute::{
     AttributeValue, BlockType, EnvironmentMap, LevelMode, LineOrder, SampleType, TimeCode,
@@ -177,7 +178,7 @@ fn value_text(value: &AttributeValue) -> String {
                 .map(|c| {
                     format!(
                         "{}, {}, sampling {} {}{}",
-                        c.name,
+                        c.name.utf8(),
                         pixel_type(c.sample_type).1,
                         c.sampling.x(),
                         c.sampling.y(),
@@ -214,7 +215,7 @@ fn value_text(value: &AttributeValue) -> String {
         A::Rational((n, d)) => format!(": {n}/{d} ({})", g(f64::from(*n) / f64::from(*d))),
         A::BlockType(kind) => format!(": \"{}\"", block_type(*kind)),
         A::TextVector(texts) => {
-            let rows: Vec<String> = texts.iter().map(|t| format!("\"{t}\"")).collect();
+            let rows: Vec<String> = texts.iter().map(|t| format!("\"{}\"", t.utf8())).collect();
             format!(":{}", lines(&rows))
         }
         A::TileDescription(tiles) => {
@@ -244,7 +245,7 @@ fn value_text(value: &AttributeValue) -> String {
             u8::from(tc.binary_group_flags[2]),
             user_data(tc)
         ),
-        A::Text(text) => format!(": \"{text}\""),
+        A::Text(text) => format!(": \"{}\"", text.utf8()),
         A::F64(x) => format!(": {}", g(*x)),
         A::F32(x) => format!(": {}", g((*x).into())),
         A::I32(x) => format!(": {x}"),
@@ -283,7 +284,7 @@ fn value_json(value: &AttributeValue) -> Value {
             .iter()
             .map(|c| {
                 json!({
-                    "name": c.name.to_string(),
+                    "name": c.name.utf8(),
                     "type": pixel_type(c.sample_type).0,
                     "sampling": [c.sampling.x(), c.sampling.y()],
                     "plinear": c.quantize_linearly,
@@ -310,7 +311,7 @@ fn value_json(value: &AttributeValue) -> Value {
         A::Preview(p) => json!({"width": p.size.width(), "height": p.size.height()}),
         A::Rational((n, d)) => json!([n, d]),
         A::BlockType(kind) => json!(block_type(*kind)),
-        A::TextVector(texts) => texts.iter().map(|t| json!(t.to_string())).collect(),
+        A::TextVector(texts) => texts.iter().map(|t| json!(t.utf8())).collect(),
         A::TileDescription(tiles) => json!({
             "size": [tiles.tile_size.width(), tiles.tile_size.height()],
             "levels": level_mode(tiles.level_mode),
@@ -324,7 +325,7 @@ fn value_json(value: &AttributeValue) -> Value {
             "binary_group_flags": tc.binary_group_flags,
             "user_data": user_data(tc),
         }),
-        A::Text(text) => json!(text.to_string()),
+        A::Text(text) => json!(text.utf8()),
         A::F64(x) => json!(x),
         A::F32(x) => json!(x),
         A::I32(x) => json!(x),

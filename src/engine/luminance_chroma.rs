@@ -14,6 +14,7 @@
 
 use super::graph::{Graph, Node, Op};
 use super::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, Chromaticities, SampleType};
 use exr::meta::header::Header;
@@ -42,7 +43,7 @@ enum Kind {
 }
 
 fn kind(channels: &[ChannelDescription]) -> Kind {
-    let has = |name: &str| channels.iter().any(|c| c.name.eq(name));
+    let has = |name: &str| channels.iter().any(|c| c.name.is(name));
     if !has("Y") || ["R", "G", "B"].iter().any(|n| has(n)) {
         Kind::Rgb
     } else if has("RY") || has("BY") {
@@ -109,14 +110,14 @@ impl Op for FromLuminance {
             Kind::Grey => {
                 input
                     .iter()
-                    .find(|c| c.name.eq("Y"))
+                    .find(|c| c.name.is("Y"))
                     .expect("Y present")
                     .sample_type
             }
         };
         let mut channels: Vec<ChannelDescription> = input
             .iter()
-            .filter(|c| !["Y", "RY", "BY"].iter().any(|n| c.name.eq(n)))
+            .filter(|c| !["Y", "RY", "BY"].iter().any(|n| c.name.is(n)))
             .cloned()
             .collect();
         for name in ["R", "G", "B"] {
@@ -128,7 +129,7 @@ impl Op for FromLuminance {
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         let chroma = kind(inputs[0]) == Kind::Chroma;
         for c in inputs[0] {
-            let expected = match c.name.to_string().as_str() {
+            let expected = match c.name.utf8().as_str() {
                 "RY" | "BY" if chroma => Vec2(2, 2),
                 _ => Vec2(1, 1),
             };
@@ -150,7 +151,7 @@ impl Op for FromLuminance {
         let mode = kind(&input.channels);
         // Every channel the input and the output share, as it is.
         for (c, channel) in out.channels.iter().enumerate() {
-            let Some(k) = input.channel_index(&channel.name.to_string()) else {
+            let Some(k) = input.channel_index(&channel.name.utf8()) else {
                 continue;
             };
             for y in out.y..out.end() {
