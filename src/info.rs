@@ -7,6 +7,7 @@
 use crate::error::Result;
 use crate::io::reader::ExrFile;
 use crate::io::standard_attributes::attributes;
+use crate::io::text::Utf8Text;
 use exr::math::{RoundingMode, Vec2};
 use exr::meta::attribute::{
     AttributeValue, BlockType, EnvironmentMap, LevelMode, LineOrder, SampleType, TimeCode,
@@ -35,19 +36,14 @@ struct Facts {
 /// missing or not decoding.
 fn facts(path: &Path) -> Result<Facts> {
     let file = ExrFile::open(path, None)?;
-    let requirements = &file.meta.requirements;
-    let flags = [
-        (requirements.is_single_layer_and_tiled, 0x200),
-        (requirements.has_long_names, 0x400),
-        (
-            requirements.has_deep_data && !requirements.has_multiple_layers,
-            0x800,
-        ),
-        (requirements.has_multiple_layers, 0x1000),
-    ]
-    .iter()
-    .filter(|(set, _)| *set)
-    .fold(0, |flags, (_, bit)| flags | bit);
+    // The version field as the file holds it, as exrheader prints it: the
+    // crate's requirements say what it would write, which for a multi-part
+    // file with a deep part lacks the non-image bit.
+    let mut field = [0u8; 8];
+    std::fs::File::open(path)
+        .and_then(|mut f| std::io::Read::read_exact(&mut f, &mut field))
+        .map_err(|e| file.error(format!("cannot read its version field: {e}")))?;
+    let word = u32::from_le_bytes(field[4..8].try_into().expect("4 bytes"));
     // The crate's header also has what it computes: its `chunkCount` is
     // shown only where the file declares one, its `type` always (as OpenEXR,
     // which gives every part a type, and exrheader show it).
@@ -89,8 +85,8 @@ fn facts(path: &Path) -> Result<Facts> {
     }
     Ok(Facts {
         bytes: file.file_len(),
-        version: requirements.file_format_version,
-        flags,
+        version: (word & 0xff) as u8,
+        flags: word & !0xff,
         parts,
     })
 }
@@ -182,7 +178,7 @@ pub(crate) fn value_text(value: &AttributeValue) -> String {
                 .map(|c| {
                     format!(
                         "{}, {}, sampling {} {}{}",
-                        c.name,
+                        c.name.utf8(),
                         pixel_type(c.sample_type).1,
                         c.sampling.x(),
                         c.sampling.y(),
@@ -219,7 +215,7 @@ pub(crate) fn value_text(value: &AttributeValue) -> String {
         A::Rational((n, d)) => format!(": {n}/{d} ({})", g(f64::from(*n) / f64::from(*d))),
         A::BlockType(kind) => format!(": \"{}\"", block_type(*kind)),
         A::TextVector(texts) => {
-            let rows: Vec<String> = texts.iter().map(|t| format!("\"{t}\"")).collect();
+            let rows: Vec<String> = texts.iter().map(|t| format!("\"{}\"", t.utf8())).collect();
             format!(":{}", lines(&rows))
         }
         A::TileDescription(tiles) => {
@@ -249,7 +245,7 @@ pub(crate) fn value_text(value: &AttributeValue) -> String {
             u8::from(tc.binary_group_flags[2]),
             user_data(tc)
         ),
-        A::Text(text) => format!(": \"{text}\""),
+        A::Text(text) => format!(": \"{}\"", text.utf8()),
         A::F64(x) => format!(": {}", g(*x)),
         A::F32(x) => format!(": {}", g((*x).into())),
         A::I32(x) => format!(": {x}"),
@@ -288,7 +284,7 @@ fn value_json(value: &AttributeValue) -> Value {
             .iter()
             .map(|c| {
                 json!({
-                    "name": c.name.to_string(),
+                    "name": c.name.utf8(),
                     "type": pixel_type(c.sample_type).0,
                     "sampling": [c.sampling.x(), c.sampling.y()],
                     "plinear": c.quantize_linearly,
@@ -315,7 +311,7 @@ fn value_json(value: &AttributeValue) -> Value {
         A::Preview(p) => json!({"width": p.size.width(), "height": p.size.height()}),
         A::Rational((n, d)) => json!([n, d]),
         A::BlockType(kind) => json!(block_type(*kind)),
-        A::TextVector(texts) => texts.iter().map(|t| json!(t.to_string())).collect(),
+        A::TextVector(texts) => texts.iter().map(|t| json!(t.utf8())).collect(),
         A::TileDescription(tiles) => json!({
             "size": [tiles.tile_size.width(), tiles.tile_size.height()],
             "levels": level_mode(tiles.level_mode),
@@ -329,7 +325,7 @@ fn value_json(value: &AttributeValue) -> Value {
             "binary_group_flags": tc.binary_group_flags,
             "user_data": user_data(tc),
         }),
-        A::Text(text) => json!(text.to_string()),
+        A::Text(text) => json!(text.utf8()),
         A::F64(x) => json!(x),
         A::F32(x) => json!(x),
         A::I32(x) => json!(x),

@@ -12,6 +12,7 @@ use super::strip::Rows;
 use crate::error::Result;
 use crate::io::deep::{decode_deep, DeepBlock, DeepChunk};
 use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
+use crate::io::text::Utf8Text;
 use crate::io::tiles::Level;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
@@ -25,7 +26,7 @@ pub fn flat_channels(file: &ExrFile, part: usize) -> Vec<ChannelDescription> {
         .channels
         .list
         .iter()
-        .filter(|c| !c.name.eq("ZBack"))
+        .filter(|c| !c.name.is("ZBack"))
         .cloned()
         .collect()
 }
@@ -108,7 +109,7 @@ impl DeepInput {
                 .channels
                 .list
                 .iter()
-                .position(|c| c.name.eq(name))
+                .position(|c| c.name.is(name))
         };
         let maps: Vec<ChannelMap> = self
             .files
@@ -117,7 +118,7 @@ impl DeepInput {
                 channels: self
                     .channels
                     .iter()
-                    .map(|c| index(f, *p, &c.name.to_string()))
+                    .map(|c| index(f, *p, &c.name.utf8()))
                     .collect(),
                 z: index(f, *p, "Z"),
                 alpha: index(f, *p, "A"),
@@ -197,7 +198,7 @@ impl DeepInput {
         maps: &[ChannelMap],
         out: &mut Rows,
     ) {
-        let is = |c: &ChannelDescription, n: &str| c.name.eq(n);
+        let is = |c: &ChannelDescription, n: &str| c.name.is(n);
         let (alpha_out, z_out) = (
             self.channels.iter().position(|c| is(c, "A")),
             self.channels.iter().position(|c| is(c, "Z")),

@@ -4,6 +4,7 @@ use super::plan::output_grid;
 use super::stage_time::{self, Stage};
 use super::strip::Rows;
 use crate::error::{Error, Result};
+use crate::io::text::Utf8Text;
 use crate::io::writer::IndexedChunk;
 use crate::io::{subsampling, zip};
 use exr::block::chunk::{
@@ -38,7 +39,7 @@ pub fn encode_rows(
         .list
         .iter()
         .map(|c| {
-            rows.channel_index(&c.name.to_string())
+            rows.channel_index(&c.name.utf8())
                 .expect("output channel present")
         })
         .collect();

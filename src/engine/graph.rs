@@ -91,7 +91,9 @@ pub trait Op: Send + Sync {
     /// Fills `out` (its rows, columns and channels are set; samples are zero)
     /// for frame `frame`. Each input holds at least rows
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data
-    /// window, in the same columns as `out`; for an op that resamples, the
+    /// window and to the rows computed (those written, grown by the graph's
+    /// reach: `plan::computed`; an op reads only the rows it holds), in the
+    /// same columns as `out`; for an op that resamples, the
     /// rows and columns `request` gave, clipped to the input's region. An op
     /// without inputs is a source.
     /// An error (bad values in an input, say) ends the frame with its message.
@@ -282,6 +284,23 @@ impl Graph {
         )
     }
 
+    /// How far the halos reach from the output: the deepest sum of halos
+    /// along any path. Taken sideways as well (`grow`): a neighbourhood
+    /// reads as far across as down (blur, defocus, erode, luminance/chroma).
+    pub fn reach(&self) -> i32 {
+        let reach = self.evaluate(
+            |_| 0usize,
+            |op, args: &[usize]| {
+                args.iter()
+                    .copied()
+                    .max()
+                    .unwrap_or(0)
+                    .saturating_add(op.halo())
+            },
+        )[self.output()];
+        i32::try_from(reach).unwrap_or(i32::MAX)
+    }
+
     pub fn evaluate<T: Clone>(
         &self,
         input: impl Fn(usize) -> T,
@@ -300,6 +319,22 @@ impl Graph {
         }
         values
     }
+}
+
+/// `rect` grown by `by` on every side (an empty one stays empty).
+pub fn grow(rect: IntegerBounds, by: i32) -> IntegerBounds {
+    if rect.size.area() == 0 || by == 0 {
+        return rect;
+    }
+    let (x0, y0) = (
+        rect.position.x().saturating_sub(by),
+        rect.position.y().saturating_sub(by),
+    );
+    let (x1, y1) = (
+        rect.end().x().saturating_add(by),
+        rect.end().y().saturating_add(by),
+    );
+    IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
 }
 
 /// The smallest window holding both; an empty window adds nothing.

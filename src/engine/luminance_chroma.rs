@@ -14,6 +14,7 @@
 
 use super::graph::{Graph, Op};
 use super::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, Chromaticities, SampleType};
 use exr::meta::header::Header;
@@ -42,7 +43,7 @@ enum Kind {
 }
 
 fn kind(channels: &[ChannelDescription]) -> Kind {
-    let has = |name: &str| channels.iter().any(|c| c.name.eq(name));
+    let has = |name: &str| channels.iter().any(|c| c.name.is(name));
     if !has("Y") || ["R", "G", "B"].iter().any(|n| has(n)) {
         Kind::Rgb
     } else if has("RY") || has("BY") {
@@ -109,14 +110,14 @@ impl Op for FromLuminance {
             Kind::Grey => {
                 input
                     .iter()
-                    .find(|c| c.name.eq("Y"))
+                    .find(|c| c.name.is("Y"))
                     .expect("Y present")
                     .sample_type
             }
         };
         let mut channels: Vec<ChannelDescription> = input
             .iter()
-            .filter(|c| !["Y", "RY", "BY"].iter().any(|n| c.name.eq(n)))
+            .filter(|c| !["Y", "RY", "BY"].iter().any(|n| c.name.is(n)))
             .cloned()
             .collect();
         for name in ["R", "G", "B"] {
@@ -128,7 +129,7 @@ impl Op for FromLuminance {
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         let chroma = kind(inputs[0]) == Kind::Chroma;
         for c in inputs[0] {
-            let expected = match c.name.to_string().as_str() {
+            let expected = match c.name.utf8().as_str() {
                 "RY" | "BY" if chroma => Vec2(2, 2),
                 _ => Vec2(1, 1),
             };
@@ -150,7 +151,7 @@ impl Op for FromLuminance {
         let mode = kind(&input.channels);
         // Every channel the input and the output share, as it is.
         for (c, channel) in out.channels.iter().enumerate() {
-            let Some(k) = input.channel_index(&channel.name.to_string()) else {
+            let Some(k) = input.channel_index(&channel.name.utf8()) else {
                 continue;
             };
             for y in out.y..out.end() {
@@ -196,10 +197,15 @@ struct Rgba {
 struct Chroma<'a> {
     input: &'a Rows,
     weights: [f32; 3],
-    /// The input's data window lines (first, last) and the strip's columns
-    /// inside it.
+    /// The input's lines held inside its data window (first, last): the
+    /// window's, wherever the halo reaches them (`plan::computed`), and the
+    /// strip's columns inside it.
     lines: (i32, i32),
     columns: std::ops::Range<usize>,
+    /// The last column a line's filter reads: the last but one at the data
+    /// window's right edge (padTmpBuf), the last held where the strip ends
+    /// inside the window (the columns a crop's halo holds beyond it).
+    right: i64,
     planes: [usize; 3],
 }
 
@@ -217,20 +223,28 @@ impl<'a> Chroma<'a> {
         Chroma {
             input,
             weights,
-            lines: (input.valid.position.y(), input.valid.end().y() - 1),
+            lines: (input.valid_rows().start, input.valid_rows().end - 1),
             columns: input.valid_columns(),
+            right: {
+                let columns = input.valid_columns();
+                let edge = input.x + columns.end as i32 == input.valid.end().x();
+                (columns.len() as i64 - 1 - i64::from(edge)).max(0)
+            },
             planes,
         }
     }
 
     /// The line FromYca reads for line `v` (readYCAScanLine's clamp: below
     /// the window its last line but one, which is even as the chroma's).
+    /// Lines computed only as a halo for other nodes may lie nearer the
+    /// edge of the lines held than the filter reaches: they read the lines
+    /// held, clamped the same way (never any line written).
     fn source(&self, v: i32) -> i32 {
         let (first, last) = self.lines;
         if v < first {
             first
         } else if v > last {
-            last - 1
+            (last - 1).max(first)
         } else {
             v
         }
@@ -251,7 +265,8 @@ impl<'a> Chroma<'a> {
 
     /// Line `y` (a chroma line) with its chroma filled in along the line
     /// (reconstructChromaHoriz; the line is padded with its first sample on
-    /// the left and its last but one pixel's on the right, as padTmpBuf).
+    /// the left and on the right its last but one pixel's, as padTmpBuf, or
+    /// the last held: `right`).
     fn along(&self, y: i32) -> Vec<Rgba> {
         let [r, g, b] = self.planes.map(|p| self.halves(p, y));
         let n = self.columns.len() as i64;
@@ -267,7 +282,7 @@ impl<'a> Chroma<'a> {
                         b: b[i],
                     };
                 }
-                let at = |k: usize| (j - 13 + 2 * k as i64).clamp(0, n - 2) as usize;
+                let at = |k: usize| (j - 13 + 2 * k as i64).clamp(0, self.right) as usize;
                 Rgba {
                     r: filter(|k| r[at(k)]),
                     g: g[i],

@@ -190,8 +190,8 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
             None => InputCursor::new(file.clone(), plan.parts[i], plan.levels[i], plan.read[i]),
         })
         .collect();
-    let window = plan.window();
-    let columns = (window.position.x(), window.size.width());
+    // The columns computed: the window's, and those the halos reach beyond it.
+    let columns = (plan.computed.position.x(), plan.computed.size.width());
     // Review media have no chunks to pass.
     let pass = match job.media {
         Some(_) => None,
@@ -309,8 +309,9 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
     Ok(())
 }
 
-/// The part of composed `rows` inside the written window (a band's rows;
-/// all of them without a band): whole blocks, as the band is on the grid.
+/// The part of composed `rows` inside the written window: a band's rows,
+/// and without the rows and columns computed around it for the halos
+/// (`plan::computed`); whole blocks, as the band is on the grid.
 fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
     let (top, bottom) = (
         rows.y.max(window.position.y()),
@@ -319,10 +320,11 @@ fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
     if top >= bottom {
         return None;
     }
-    if (top, bottom) == (rows.y, rows.end()) {
+    let columns = window.position.x()..window.end().x();
+    if (top, bottom) == (rows.y, rows.end()) && columns == (rows.x..rows.x + rows.width as i32) {
         return Some(rows);
     }
-    Some(rows.copy_rows(top..bottom))
+    Some(rows.copy_region(top..bottom, columns))
 }
 
 fn encode_stage(job: &Job, rx: Receiver<Msg<Composed>>, tx: Sender<Msg<Encoded>>) -> Result<()> {

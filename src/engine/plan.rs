@@ -2,7 +2,7 @@
 //! data window, the output header, and the strip height.
 
 use super::deep_input::DeepInput;
-use super::graph::{Graph, Node};
+use super::graph::{grow, intersection, union, Graph, Node};
 use super::region::Regions;
 use crate::error::{Error, Kind, Result};
 use crate::io::attributes::Edits;
@@ -411,6 +411,23 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
         ));
     }
+    // OpenEXR's coordinates (ImfHeader.cpp's sanity check, the exr crate's):
+    // an input far out, resized, can leave them.
+    let limit = i64::from(i32::MAX / 2);
+    let (x0, y0) = (
+        i64::from(window.position.x()),
+        i64::from(window.position.y()),
+    );
+    let (x1, y1) = (
+        x0 + window.size.width() as i64 - 1,
+        y0 + window.size.height() as i64 - 1,
+    );
+    if [x0, y0].iter().any(|&v| v <= -limit) || [x1, y1].iter().any(|&v| v >= limit) {
+        return Err(located(format!(
+            "the result's data window ({x0} {y0}) - ({x1} {y1}) would not fit OpenEXR's 32-bit \
+             coordinates (between -{limit} and {limit}, excluded)"
+        )));
+    }
 
     let mut header = match job.header_base {
         HeaderBase::Input(i) => header_of(i).clone(),
@@ -505,8 +522,14 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             inputs[i].meta.headers.len()
         )));
     }
+    // OpenEXR allows subsampled channels in scanline parts only.
+    let tiled = header.blocks.has_tiles().then(|| {
+        "OpenEXR allows them in scanline parts only, so the output cannot be tiled: drop --tile \
+         (or the write node's tile)"
+            .to_string()
+    });
     if let Some(message) = crate::io::subsampling::any(&header)
-        .then(|| crate::io::subsampling::refused(header.compression))
+        .then(|| tiled.or_else(|| crate::io::subsampling::refused(header.compression)))
         .flatten()
     {
         let source = match job.header_base {
@@ -519,10 +542,11 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     }
     // The output's block rows: scanline blocks, or tile rows.
     let lines = output_grid(&header).block.y();
-    let computed = match job.rows {
-        Some(rows) => band(&mut header, graph, rows)?,
+    let written = match job.rows {
+        Some(rows) => band(&mut header, rows)?,
         None => window,
     };
+    let computed = computed(written, window, graph, &windows, lines);
     // Never write a file the reader would refuse, nor allocate for it. From
     // inputs, a result far wider or taller than any of them (inputs far apart) is an
     // input problem; a generated image asked that wide, a usage error.
@@ -723,34 +747,49 @@ pub fn input_level(job: &Job, file: &ExrFile, part: usize) -> Result<Level> {
 }
 
 /// Narrows `header` to the band of rows `y0..y1` (on its block grid) and
-/// returns the rows to compute for it: the band and, around it, the rows the
-/// graph's halos reach (the deepest sum along any path), whole blocks.
-fn band(header: &mut Header, graph: &Graph, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
+/// returns the band.
+fn band(header: &mut Header, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
     let window = header.data_window();
     let (top, bottom) = (window.position.y(), window.end().y());
     let lines = header.compression.scan_lines_per_block() as i32;
-    let y1 = y1.min(bottom);
     let on_grid = |y: i32| (y - top) % lines == 0 || y == bottom;
-    if y0 < top || y0 >= y1 || !on_grid(y0) || !on_grid(y1) {
+    if y0 < top || y0 >= y1 || y1 > bottom || !on_grid(y0) || !on_grid(y1) {
         return Err(Error::usage(format!(
             "--rows {y0}-{y1}: a band must lie in rows {top}-{bottom} and start and end on \
              {lines}-line block boundaries counted from row {top}"
         )));
     }
-    let reach = graph.evaluate(
-        |_| 0,
-        |op, args: &[usize]| args.iter().copied().max().unwrap_or(0) + op.halo(),
-    )[graph.output()] as i32;
-    let first = (top + (y0 - reach - top).max(0) / lines * lines).max(top);
-    let last = (y1 + reach).min(bottom);
-    let last = (top + (last - top + lines - 1) / lines * lines).min(bottom);
     header.own_attributes.layer_position = exr::math::Vec2(window.position.x(), y0);
     header.layer_size = exr::math::Vec2(window.size.width(), (y1 - y0) as usize);
     header.chunk_count = ((y1 - y0) as usize).div_ceil(lines as usize);
     Ok(IntegerBounds::new(
-        (window.position.x(), first),
-        (window.size.width(), (last - first) as usize),
+        (window.position.x(), y0),
+        (window.size.width(), (y1 - y0) as usize),
     ))
+}
+
+/// The rows and columns computed to write `written` (the output's `window`,
+/// or a band of it): it and, around it, as far as the graph's halos reach
+/// (`Graph::reach`), where some node has data. So a node behind a crop, or
+/// behind a band's edge, reads the rows and columns beyond it as the whole
+/// image would have it (a crop of a blur is the blur's crop). The top is on
+/// the output's block grid, counted from the window's top, so that the
+/// written rows come in whole blocks.
+fn computed(
+    written: IntegerBounds,
+    window: IntegerBounds,
+    graph: &Graph,
+    windows: &[IntegerBounds],
+    lines: usize,
+) -> IntegerBounds {
+    let data = windows.iter().copied().fold(written, union);
+    let rect = intersection(grow(written, graph.reach()), data);
+    let (lines, origin) = (lines as i32, window.position.y());
+    let top = origin + (rect.position.y() - origin).div_euclid(lines) * lines;
+    IntegerBounds::new(
+        (rect.position.x(), top),
+        (rect.size.width(), (rect.end().y() - top) as usize),
+    )
 }
 
 /// Input `i`'s flattening, if it is deep: its own file and those merged

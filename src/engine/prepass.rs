@@ -6,6 +6,7 @@ use super::plan::{input_level, Job, Source};
 use crate::error::Result;
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
+use crate::io::text::Utf8Text;
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -30,7 +31,7 @@ pub fn max_over_rows(
                 .channels
                 .list
                 .iter()
-                .position(|c| c.name.eq(name))
+                .position(|c| c.name.is(name))
                 .ok_or_else(|| file.error(format!("has no channel '{name}'")))
         };
         let wanted = [position(names[0])?, position(names[1])?];

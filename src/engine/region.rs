@@ -3,12 +3,14 @@
 //! *zone* (the output's, when nothing resamples: every node then has the
 //! output's rows and columns, the constant-halo fast path). An op that
 //! resamples (`Op::request`: a resize, a transform) reads a zone of its own:
-//! the rectangle its readers request of it, clipped to its nodes' data. Per
-//! output strip, a zone's *span* is the rows requested of it for the strip's
-//! rows: what decode reads of an input, and what a strip holds of a node.
+//! the rectangle its readers request of it, grown by what the graph's halos
+//! reach (a blur behind a resize reads beyond it), clipped to its nodes'
+//! data. Per output strip, a zone's *span* is the rows requested of it for
+//! the strip's rows (grown the same way): what decode reads of an input, and
+//! what a strip holds of a node.
 //! The rule and the memory bound: specs/architecture.md, "Regions of interest".
 
-use super::graph::{intersection, union, Graph, Node};
+use super::graph::{grow, intersection, union, Graph, Node};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
 
@@ -19,6 +21,9 @@ pub struct Regions {
     rects: Vec<IntegerBounds>,
     /// The nodes that resample, in graph order, each with its input's zone.
     resamplers: Vec<(usize, usize)>,
+    /// What the graph's halos reach (`Graph::reach`), added around what a
+    /// resampler requests: a node of its input's zone may read that far.
+    reach: i32,
 }
 
 fn find(parent: &mut [usize], mut n: usize) -> usize {
@@ -103,6 +108,7 @@ impl Regions {
             zone,
             rects: vec![IntegerBounds::zero(); roots.len()],
             resamplers,
+            reach: graph.reach(),
         };
         // A zone no resampler reads (an input the graph leaves unread)
         // keeps the output's rows and columns, as every node did before.
@@ -122,7 +128,7 @@ impl Regions {
                 if rect.size.area() == 0 {
                     continue;
                 }
-                let asked = request(graph, n, rect);
+                let asked = grow(request(graph, n, rect), regions.reach);
                 let asked = intersection(asked, data[into]);
                 regions.rects[into] = union(regions.rects[into], asked);
             }
@@ -159,6 +165,7 @@ impl Regions {
                     continue;
                 };
                 let asked = request(graph, n, rows_of(self.rect(n), &out));
+                let asked = grow(asked, self.reach);
                 let asked = clamp(row_range(asked), &row_range(self.rects[into]));
                 spans[into] = Some(match spans[into].take() {
                     Some(s) if s.end > s.start => s.start.min(asked.start)..s.end.max(asked.end),

@@ -1,6 +1,7 @@
 //! A band of whole rows of one image: one typed plane per channel.
 
 use super::stage_time::{self, Stage};
+use crate::io::text::Utf8Text;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use half::f16;
 use half::slice::HalfFloatSliceExt;
@@ -345,7 +346,7 @@ impl RowsMut<'_> {
 }
 
 fn channel_index(channels: &[ChannelDescription], name: &str) -> Option<usize> {
-    channels.iter().position(|c| c.name.eq(name))
+    channels.iter().position(|c| c.name.is(name))
 }
 
 impl Rows {

@@ -13,6 +13,7 @@ pub mod sequence;
 pub mod standard_attributes;
 pub mod stitch;
 pub mod subsampling;
+pub mod text;
 pub mod tiles;
 pub mod timecode;
 pub mod writer;

@@ -3,6 +3,7 @@
 
 use super::reader::ExrFile;
 use crate::error::Result;
+use crate::io::text::Utf8Text;
 
 /// Splits `beauty.####.exr:left` into the path and the part. Only a suffix
 /// after `.exr` counts, so paths with colons elsewhere stay whole.
@@ -29,20 +30,20 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
         let names: Vec<String> = headers
             .iter()
             .filter_map(|h| h.own_attributes.layer_name.as_ref())
-            .map(|n| n.to_string())
+            .map(|n| n.utf8())
             .collect();
         let by_name = headers.iter().position(|h| {
             h.own_attributes
                 .layer_name
                 .as_ref()
-                .is_some_and(|n| n.eq(part))
+                .is_some_and(|n| n.is(part))
         });
         let by_index = part.parse::<usize>().ok().filter(|&i| i < headers.len());
         let listed: Vec<String> = headers
             .iter()
             .enumerate()
             .map(|(i, h)| match &h.own_attributes.layer_name {
-                Some(name) => format!("{i} ({name})"),
+                Some(name) => format!("{i} ({})", name.utf8()),
                 None => i.to_string(),
             })
             .collect();
@@ -60,11 +61,11 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
     }
     let of_view = |h: &&exr::meta::header::Header| {
         let attributes = &h.own_attributes;
-        attributes.view_name.as_ref().is_some_and(|n| n.eq(view))
+        attributes.view_name.as_ref().is_some_and(|n| n.is(view))
             || attributes
                 .multi_view_names
                 .as_ref()
-                .is_some_and(|list| list.iter().any(|n| n.eq(view)))
+                .is_some_and(|list| list.iter().any(|n| n.is(view)))
     };
     Ok(headers.iter().position(|h| of_view(&h)).unwrap_or(0))
 }
@@ -77,7 +78,7 @@ fn views(file: &ExrFile) -> Vec<String> {
         let attributes = &header.own_attributes;
         let listed = attributes.multi_view_names.iter().flatten();
         for name in attributes.view_name.iter().chain(listed) {
-            let name = name.to_string();
+            let name = name.utf8();
             if !views.contains(&name) {
                 views.push(name);
             }

@@ -7,6 +7,7 @@ use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
+use crate::io::text::Utf8Text;
 use crate::params::BLUR_RADIUS;
 use exr::meta::attribute::{ChannelDescription, SampleType};
 use std::sync::Arc;
@@ -99,7 +100,7 @@ impl Op for Horizontal {
         let names = self.layers.filtered(inputs[0]);
         inputs[0]
             .iter()
-            .filter(|c| names.iter().any(|n| c.name.eq(n.as_str())))
+            .filter(|c| names.iter().any(|n| c.name.is(n.as_str())))
             .map(|c| ChannelDescription {
                 sample_type: SampleType::F32,
                 ..c.clone()
@@ -123,7 +124,7 @@ impl Op for Horizontal {
             .iter()
             .map(|c| {
                 input
-                    .channel_index(&c.name.to_string())
+                    .channel_index(&c.name.utf8())
                     .expect("a filtered channel")
             })
             .collect();
@@ -179,7 +180,7 @@ impl Op for Vertical {
             .iter()
             .map(|c| {
                 blurred
-                    .channel_index(&c.name.to_string())
+                    .channel_index(&c.name.utf8())
                     .map(|i| match &blurred.planes[i] {
                         Samples::F32(v) => v.as_slice(),
                         _ => unreachable!("the first pass writes f32"),
@@ -207,7 +208,7 @@ impl Op for Vertical {
                         );
                     }
                     None => {
-                        let name = out.channels[c].name.to_string();
+                        let name = out.channels[c].name.utf8();
                         let s = original
                             .channel_index(&name)
                             .expect("the original's channel");

@@ -8,6 +8,7 @@ use super::layers::Selection;
 use super::merge::{Merge, MergeOp};
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::SHADOW_GAIN;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 
@@ -98,7 +99,7 @@ impl Op for Shadow {
         for y in out.valid_rows() {
             let range = out.row_range(y);
             for (c, channel) in out.channels.iter().enumerate() {
-                let name = channel.name.to_string();
+                let name = channel.name.utf8();
                 if !COLOURS.contains(&name.as_str()) {
                     let s = kept.channel_index(&name).expect("the kept image's channel");
                     out.planes[c]

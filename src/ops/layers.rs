@@ -2,6 +2,7 @@
 //! (`left.R`) and their alphas. See specs/ops.md, "Layers and views".
 
 use crate::engine::strip::Rows;
+use crate::io::text::Utf8Text;
 use exr::meta::attribute::ChannelDescription;
 
 /// The colour channels of a layer; its other channels (Z, u, v, mask...)
@@ -55,13 +56,13 @@ impl Layer {
 fn has(channels: &[&[ChannelDescription]], name: &str) -> bool {
     channels
         .iter()
-        .any(|list| list.iter().any(|c| c.name.eq(name)))
+        .any(|list| list.iter().any(|c| c.name.is(name)))
 }
 
 fn has_prefix(channels: &[&[ChannelDescription]], prefix: &str) -> bool {
     channels.iter().any(|list| {
         list.iter()
-            .map(|c| c.name.to_string())
+            .map(|c| c.name.utf8())
             .any(|name| name.starts_with(prefix) && prefix.len() < name.len())
     })
 }
@@ -115,7 +116,7 @@ impl Selection {
     fn common_layers(inputs: &[&[ChannelDescription]]) -> Vec<String> {
         let colour_layers = |list: &[ChannelDescription]| -> Vec<String> {
             list.iter()
-                .map(|c| c.name.to_string())
+                .map(|c| c.name.utf8())
                 .filter(|n| COLOUR.iter().any(|c| n.rsplit('.').next() == Some(c)))
                 .map(|n| layer_of(&n).to_string())
                 .collect()

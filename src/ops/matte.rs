@@ -6,6 +6,7 @@
 use super::declare::{input, named, params, Operation, Value};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::{BALANCE, CLIP, GAIN, SCREEN, SOFTNESS, THRESHOLD};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
@@ -265,7 +266,7 @@ impl Op for Matte {
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         let mut out = inputs[0].to_vec();
         for name in RGB.iter().chain(&["A"]) {
-            if !out.iter().any(|c| c.name.eq(name)) {
+            if !out.iter().any(|c| c.name.is(name)) {
                 out.push(ChannelDescription::named(*name, SampleType::F32));
             }
         }
@@ -338,7 +339,7 @@ impl Op for Matte {
             let range = out.row_range(y);
             let dst = range.start + columns.start..range.start + columns.end;
             for (c, channel) in out.channels.iter().enumerate() {
-                let name = channel.name.to_string();
+                let name = channel.name.utf8();
                 match RGB.iter().chain(&["A"]).position(|n| *n == name) {
                     Some(k) => out.planes[c].write_f32(dst.clone(), &result[k]),
                     None => {

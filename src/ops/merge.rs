@@ -5,6 +5,7 @@ use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::{Layer, Selection};
 use crate::engine::graph::{intersection, union, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Extent, Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::MIX;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::ops::Range;
@@ -294,7 +295,7 @@ impl Merge {
         channels
             .iter()
             .map(|c| {
-                let name = c.name.to_string();
+                let name = c.name.utf8();
                 layers
                     .iter()
                     .enumerate()
@@ -326,10 +327,10 @@ impl Op for Merge {
         let mut out = b.to_vec();
         for layer in self.layers.resolve(inputs) {
             for name in layer.colours().chain([layer.alpha_channel()]) {
-                let in_b = b.iter().any(|c| c.name.eq(name.as_str()));
+                let in_b = b.iter().any(|c| c.name.is(name.as_str()));
                 if let Some(c) = a
                     .iter()
-                    .find(|c| c.name.eq(name.as_str()))
+                    .find(|c| c.name.is(name.as_str()))
                     .filter(|_| !in_b)
                 {
                     out.push(c.clone());
@@ -355,7 +356,7 @@ impl Op for Merge {
         if !matches!(self.op, MergeOp::Over | MergeOp::Atop | MergeOp::Xor) {
             return Vec::new();
         }
-        let has = |name: &String| inputs[0].iter().any(|c| c.name.eq(name.as_str()));
+        let has = |name: &String| inputs[0].iter().any(|c| c.name.is(name.as_str()));
         self.layers
             .resolve(inputs)
             .iter()
@@ -448,7 +449,7 @@ impl Op for Merge {
             }
             let dst = at(out);
             for (c, role) in roles.iter().enumerate() {
-                let name = out.channels[c].name.to_string();
+                let name = out.channels[c].name.utf8();
                 match *role {
                     Role::Alpha(l) => out.planes[c].write_f32(dst.clone(), &alphas[l].2[..n]),
                     Role::Colour(l) => {
@@ -495,7 +496,7 @@ fn pass_b(
     };
     let dst = at(out);
     for (c, role) in roles.iter().enumerate() {
-        match (b.channel_index(&out.channels[c].name.to_string()), role) {
+        match (b.channel_index(&out.channels[c].name.utf8()), role) {
             (Some(s), _) => out.planes[c]
                 .bytes_mut(dst.clone())
                 .copy_from_slice(b.planes[s].bytes(at(b))),
@@ -803,7 +804,7 @@ mod tests {
         let names: Vec<String> = m
             .channels(&[&a.channels, &b.channels])
             .iter()
-            .map(|c| c.name.to_string())
+            .map(|c| c.name.utf8())
             .collect();
         // A's Z is not composited, so it does not come through.
         assert_eq!(names, ["A", "G", "R", "Y"]);

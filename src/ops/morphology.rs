@@ -6,6 +6,7 @@ use super::declare::{input, params, Args, Operation};
 use super::layers::Selection;
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::MORPH_RADIUS;
 use exr::meta::attribute::ChannelDescription;
 
@@ -81,7 +82,7 @@ impl Op for Morphology {
             .collect();
         match alphas
             .iter()
-            .find(|a| !inputs[0].iter().any(|c| c.name.eq(a.as_str())))
+            .find(|a| !inputs[0].iter().any(|c| c.name.is(a.as_str())))
         {
             Some(missing) => Err(format!("no alpha channel '{missing}' to erode or dilate")),
             None => Ok(()),

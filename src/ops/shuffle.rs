@@ -6,6 +6,7 @@
 use super::declare::{input, params, Operation};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use exr::meta::attribute::{ChannelDescription, SampleType, Text};
 
 pub const SHUFFLE: Operation = Operation {
@@ -182,7 +183,7 @@ struct Output {
 }
 
 fn names(list: &[ChannelDescription]) -> String {
-    let names: Vec<String> = list.iter().map(|c| c.name.to_string()).collect();
+    let names: Vec<String> = list.iter().map(|c| c.name.utf8()).collect();
     match names.is_empty() {
         true => "none".into(),
         false => names.join(", "),
@@ -213,9 +214,9 @@ impl Shuffle {
                 }
                 From::Name(name) => {
                     let lower = name.to_lowercase();
-                    let found = from.iter().position(|c| c.name.eq(name)).or_else(|| {
+                    let found = from.iter().position(|c| c.name.is(name)).or_else(|| {
                         from.iter()
-                            .position(|c| c.name.to_string().to_lowercase() == lower)
+                            .position(|c| c.name.utf8().to_lowercase() == lower)
                     });
                     match found {
                         Some(i) => Ok(i),
@@ -273,8 +274,8 @@ impl Shuffle {
 
 /// A channel name OpenEXR can store.
 fn text(name: &str) -> Result<Text, String> {
-    Text::new_or_none(name)
-        .filter(|_| !name.is_empty() && name.len() < 256)
+    (!name.is_empty() && name.len() < 256)
+        .then(|| crate::io::text::text(name))
         .ok_or_else(|| format!("'{name}' is not a channel name a file can hold"))
 }
 
@@ -388,7 +389,7 @@ mod tests {
         Ok(op
             .channels(inputs)
             .iter()
-            .map(|c| (c.name.to_string(), c.sample_type))
+            .map(|c| (c.name.utf8(), c.sample_type))
             .collect())
     }
 
@@ -491,7 +492,7 @@ mod tests {
         for mut band in out.bands(0, 3) {
             op.compute(1, &[&a, &b], &mut band).unwrap();
         }
-        let names: Vec<String> = out.channels.iter().map(|c| c.name.to_string()).collect();
+        let names: Vec<String> = out.channels.iter().map(|c| c.name.utf8()).collect();
         assert_eq!(names, ["R", "Z", "alpha", "id"]);
         assert_eq!(out.planes[2], a.planes[0], "alpha is A, bit for bit");
         assert_eq!(out.planes[3], a.planes[2], "id is carried");

@@ -6,6 +6,7 @@
 use super::declare::{choice, input, params, Operation, Value};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::DISPARITY;
 use exr::meta::attribute::ChannelDescription;
 
@@ -83,7 +84,7 @@ impl Op for Stereo {
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
-        match inputs[0].iter().any(|c| c.name.eq(self.z_channel.as_str())) {
+        match inputs[0].iter().any(|c| c.name.is(self.z_channel.as_str())) {
             true => Ok(()),
             false => Err(format!("no depth channel '{}'", self.z_channel)),
         }
@@ -132,7 +133,7 @@ impl Op for Stereo {
             let (from, to) = (input.row_range(y), out.row_range(y));
             for (c, channel) in out.channels.iter().enumerate() {
                 let s = input
-                    .channel_index(&channel.name.to_string())
+                    .channel_index(&channel.name.utf8())
                     .expect("the input's channel");
                 let size = channel.sample_type.bytes_per_sample();
                 for x in columns.clone() {

@@ -9,6 +9,7 @@ use crate::engine::graph::Op;
 use crate::engine::plan::Job;
 use crate::engine::prepass::max_over_rows;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::{MAX_DISPLACEMENT, VBLUR_SCALE};
 use exr::meta::attribute::ChannelDescription;
 
@@ -207,7 +208,7 @@ impl Op for VectorBlur {
         }
         let samples = out.height * w;
         for (c, channel) in out.channels.iter().enumerate() {
-            let name = channel.name.to_string();
+            let name = channel.name.utf8();
             match names.iter().position(|n| *n == name) {
                 Some(k) => out.planes[c].write_f32(0..samples, &sums[k]),
                 None => {

@@ -5,6 +5,7 @@
 use super::declare::{input, params, Operation};
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use exr::meta::attribute::ChannelDescription;
 
 pub const ZMERGE: Operation = Operation {
@@ -60,12 +61,12 @@ impl Op for ZMerge {
         let last = inputs[inputs.len() - 1];
         let mut out = last.to_vec();
         for name in COLOURS.iter().chain(&["A", self.z_channel.as_str()]) {
-            if out.iter().any(|c| c.name.eq(name)) {
+            if out.iter().any(|c| c.name.is(name)) {
                 continue;
             }
             if let Some(c) = inputs
                 .iter()
-                .find_map(|list| list.iter().find(|c| c.name.eq(name)))
+                .find_map(|list| list.iter().find(|c| c.name.is(name)))
             {
                 out.push(c.clone());
             }
@@ -77,7 +78,7 @@ impl Op for ZMerge {
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         match inputs
             .iter()
-            .position(|list| !list.iter().any(|c| c.name.eq(self.z_channel.as_str())))
+            .position(|list| !list.iter().any(|c| c.name.is(self.z_channel.as_str())))
         {
             Some(i) => Err(format!(
                 "input {} has no depth channel '{}'",
@@ -158,7 +159,7 @@ impl Op for ZMerge {
             let range = out.row_range(y);
             let dst = range.start + columns.start..range.start + columns.end;
             for (c, channel) in out.channels.iter().enumerate() {
-                let name = channel.name.to_string();
+                let name = channel.name.utf8();
                 let computed = COLOURS
                     .iter()
                     .chain(&["A", self.z_channel.as_str()])

@@ -488,3 +488,77 @@ fn info_json_gives_the_same_facts_per_part() {
         serde_json::json!({"name": "B", "type": "half", "sampling": [1, 1], "plinear": false})
     );
 }
+
+/// OpenEXR's names and strings are bytes, UTF-8 in practice: a non-ASCII
+/// channel name and string attribute are written as their UTF-8 bytes, found
+/// by --ch, --layer and job files as typed, and shown as OpenEXR shows them
+/// (they had been read as Latin-1: "Ü" shown as "Ã\u{9c}", and not found).
+#[test]
+fn non_ascii_names_and_strings_are_utf8_both_ways() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |n: &str| dir.path().join(n);
+    generate(&p("plain.exr"), "fg", (8, 4), &[]);
+    ok(&[
+        "shuffle",
+        s(&p("plain.exr")),
+        "--ch",
+        "R,G,B,Ü=A,日本.R=R",
+        "--attrib",
+        "note=värde",
+        "-o",
+        s(&p("u.exr")),
+        "-q",
+    ]);
+    let bytes = std::fs::read(p("u.exr")).unwrap();
+    let holds = |needle: &[u8]| bytes.windows(needle.len()).any(|w| w == needle);
+    assert!(holds("Ü\0".as_bytes()) && holds("日本.R\0".as_bytes()));
+    assert!(holds("note\0string\0".as_bytes()) && holds("värde".as_bytes()));
+    // Found as typed: a channel, a layer, and in a job file.
+    ok(&[
+        "shuffle",
+        s(&p("u.exr")),
+        "--ch",
+        "Ü,A=Ü",
+        "-o",
+        s(&p("a.exr")),
+        "-q",
+    ]);
+    ok(&[
+        "premult",
+        s(&p("u.exr")),
+        "--layer",
+        "日本",
+        "-o",
+        s(&p("l.exr")),
+        "-q",
+    ]);
+    let job = format!(
+        "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"s\"\nop = \"shuffle\"\nch = \"X=Ü\"\ninputs = [\"in\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"s\"]\nattrib = [\"söt=ö\"]\n",
+        s(&p("u.exr")),
+        s(&p("j.exr"))
+    );
+    std::fs::write(p("job.toml"), job).unwrap();
+    ok(&["run", s(&p("job.toml")), "-q"]);
+    // X is Ü, which is the plate's A (the test's reader keys names as Latin-1).
+    assert_eq!(
+        read_image(&p("j.exr")).channels["X"],
+        read_image(&p("plain.exr")).channels["A"]
+    );
+    // Shown as OpenEXR shows them.
+    let out = run(&["info", s(&p("u.exr"))]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(text.contains("    Ü, 16-bit floating-point"), "{text}");
+    assert!(text.contains("note (type string): \"värde\""), "{text}");
+    if let Some(exrheader) = peer("exrheader") {
+        let theirs = succeed(std::process::Command::new(exrheader).arg(p("j.exr")));
+        let theirs = String::from_utf8_lossy(&theirs.stdout).to_string();
+        assert!(theirs.contains("söt (type string): \"ö\""), "{theirs}");
+        let theirs =
+            succeed(std::process::Command::new(peer("exrheader").unwrap()).arg(p("u.exr")));
+        let theirs = String::from_utf8_lossy(&theirs.stdout).to_string();
+        assert!(
+            theirs.contains("    日本.R, 16-bit floating-point"),
+            "{theirs}"
+        );
+    }
+}

@@ -189,3 +189,52 @@ fn a_crop_under_a_merge_is_black_outside_its_window() {
     let expected = reference_merge("over", &clear, &cropped, false, 1.0, &[""]);
     assert_identical(&read_image(&d.join("out.exr")), &expected);
 }
+
+/// A blur behind a crop reads the rows and columns beyond the crop as the
+/// whole image has them (the crop's edges had been the blur's): the job's
+/// result is the crop of the whole blur, bit for bit, cut or not, whatever
+/// the strips.
+#[test]
+fn a_crop_of_a_blur_is_the_blurs_crop() {
+    let dir = tempfile::tempdir().unwrap();
+    let (path, img) = input(dir.path());
+    let whole = ours(
+        &path,
+        &dir.path().join("blur.exr"),
+        "blur",
+        &["--radius", "3"],
+    );
+    let (job, out) = (dir.path().join("job.toml"), dir.path().join("out.exr"));
+    for (region, cut, strip) in [
+        ("20x10+5+7", false, "64"),
+        ("20x10+5+7", false, "1"),
+        ("9x30+40+9", true, "4"),
+    ] {
+        std::fs::write(
+            &job,
+            format!(
+                "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"soft\"\nop = \"blur\"\nradius = 3\ninputs = [\"in\"]\n\n[[node]]\nname = \"crop\"\nop = \"crop\"\nregion = \"{region}\"\ncut = {cut}\ninputs = [\"soft\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"crop\"]\n",
+                s(&path),
+                s(&out)
+            ),
+        )
+        .unwrap();
+        let ran = run(&["run", s(&job), "--strip-rows", strip, "--quiet"]);
+        assert!(ran.status.success(), "{}", stderr(&ran));
+        let numbers: Vec<i32> = region
+            .split(['x', '+'])
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let (w, h, x, y) = (numbers[0], numbers[1], numbers[2], numbers[3]);
+        let expected = match cut {
+            false => reference(&whole, (x, y, w as usize, h as usize), (0, 0), img.display),
+            true => reference(
+                &whole,
+                (0, 0, w as usize, h as usize),
+                (x, y),
+                (w as usize, h as usize),
+            ),
+        };
+        assert_identical(&read_image(&out), &expected);
+    }
+}

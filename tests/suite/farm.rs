@@ -392,16 +392,25 @@ fn bands_rendered_apart_stitch_into_the_whole_render_byte_for_byte() {
         std::fs::read(p("whole.exr")).unwrap()
     );
     assert_peers_read(&p("stitched.exr"));
-    // A band off the block grid, and a gap between bands, are refused.
-    let out = run(&[
-        "run",
-        s(&p("job.toml")),
-        "-o",
-        s(&p("x.exr")),
-        "--rows",
-        "5-32",
-    ]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    // A band off the block grid, or past the bottom, and a gap between
+    // bands, are refused.
+    for rows in ["5-32", "48-200", "100-116"] {
+        let out = run(&[
+            "run",
+            s(&p("job.toml")),
+            "-o",
+            s(&p("x.exr")),
+            "--rows",
+            rows,
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{rows}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("a band must lie in rows 0-100"),
+            "{}",
+            stderr(&out)
+        );
+        assert!(!p("x.exr").exists());
+    }
     let out = run(&[
         "stitch",
         s(&p("b1.exr")),

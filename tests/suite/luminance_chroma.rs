@@ -330,6 +330,71 @@ fn b44_of_subsampled_channels_is_refused_naming_the_file_and_the_compression() {
     }
 }
 
+/// OpenEXR allows subsampled channels in scanline parts only: a tiled output
+/// of them (--tile, or a write node's tile) is refused before anything is
+/// written (it had written a file no reader takes, or panicked). Composited
+/// over a tiled plate they are RGB, and the output follows the plate's tiles.
+#[test]
+fn a_tiled_output_of_subsampled_channels_is_refused_and_a_tiled_plate_takes_their_rgb() {
+    let input = sample("YcaOffset.exr");
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("out.exr");
+    let job = dir.path().join("job.toml");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"in\"]\ntile = \"16x16\"\n",
+            s(&input),
+            s(&output)
+        ),
+    )
+    .unwrap();
+    for args in [
+        vec!["transcode", s(&input), "-o", s(&output), "--tile", "16"],
+        vec!["transcode", s(&input), "-o", s(&output), "--tile", "64"],
+        vec!["run", s(&job)],
+    ] {
+        let out = run(&args);
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {message}");
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        assert!(
+            message.contains("YcaOffset.exr") && message.contains("scanline parts only"),
+            "{message}"
+        );
+        assert!(!output.exists());
+    }
+    let (plain, plate) = (dir.path().join("plain.exr"), dir.path().join("plate.exr"));
+    ok(&[
+        "generate",
+        s(&plain),
+        "--width",
+        "40",
+        "--height",
+        "40",
+        "-q",
+    ]);
+    ok(&[
+        "transcode",
+        s(&plain),
+        "-o",
+        s(&plate),
+        "--tile",
+        "16",
+        "-q",
+    ]);
+    ok(&["over", s(&input), s(&plate), "-o", s(&output), "-q"]);
+    let out = run(&["info", s(&output)]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(text.contains("tiles (type tiledesc)"), "{text}");
+    assert!(
+        text.contains("sampling 1 1") && !text.contains("sampling 2 2"),
+        "{text}"
+    );
+    common::assert_peers_read(&output);
+}
+
 #[test]
 fn operations_read_luminance_chroma_as_openexrs_rgba_interface_does() {
     let input = sample("YcaOffset.exr");
@@ -383,6 +448,51 @@ fn a_luminance_image_over_a_smaller_plate_reads_the_plate_with_its_own_window() 
         assert_eq!(&half_bits(&output, name), luminance, "{name}");
     }
 }
+/// A crop keeps fewer rows or columns than the image: the conversion still
+/// reads the lines and pixels beyond the crop that its filters reach (it had
+/// read rows it did not hold and panicked), so the result is the crop of the
+/// whole image's RGB, bit for bit, wherever the strips fall.
+#[test]
+fn a_crop_of_a_luminance_chroma_image_is_the_crop_of_its_rgb() {
+    let input = sample("YcaOffset.exr");
+    let image = raw(&input);
+    let expected = reference_rgb(&image);
+    let dir = tempfile::tempdir().unwrap();
+    let output = dir.path().join("crop.exr");
+    // Rows off the top and bottom, a corner, one column, the bottom right;
+    // then cut to the origin, and strips of one row.
+    for (region, cut, strip) in [
+        ("-6,9,31,30", false, "64"),
+        ("-3,5,4,11", false, "64"),
+        ("1,4,1,33", false, "64"),
+        ("20,25,31,33", false, "64"),
+        ("-3,5,4,11", true, "64"),
+        ("0,6,17,28", false, "1"),
+    ] {
+        let mut args = vec!["crop", s(&input), "--region", region, "-o", s(&output)];
+        args.extend(["--strip-rows", strip, "-q"]);
+        if cut {
+            args.push("--cut");
+        }
+        ok(&args);
+        let bounds: Vec<i32> = region.split(',').map(|v| v.parse().unwrap()).collect();
+        let (x0, y0, x1, y1) = (bounds[0], bounds[1], bounds[2], bounds[3]);
+        for (c, name) in ["R", "G", "B"].iter().enumerate() {
+            let mut crop = Vec::new();
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let at = (y - image.y) as usize * image.width + (x - image.x) as usize;
+                    crop.push(expected[c][at]);
+                }
+            }
+            assert!(
+                half_bits(&output, name) == crop,
+                "{name} of {region} (cut {cut}, strips of {strip}) differs"
+            );
+        }
+    }
+}
+
 #[test]
 fn mt_tam_north_reads_carries_and_composites() {
     let Some(path) = public_image("../exr-images-more/LuminanceChroma/MtTamNorth.exr") else {

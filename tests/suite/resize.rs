@@ -444,3 +444,39 @@ fn reformat_fit_centred_equals_oiiotool_fit() {
         assert_close(&got, &expected, format);
     }
 }
+
+/// A window far out, resized, would leave OpenEXR's coordinates: an input
+/// error naming the input before anything is written (it had failed as an
+/// output error when the writer refused the header).
+#[test]
+fn a_result_outside_openexrs_coordinates_is_refused_naming_the_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let (input, output) = (dir.path().join("far.exr"), dir.path().join("out.exr"));
+    let img = random_rgba(3, 0, 1_073_741_000, 8, 4, Kind::Half, false);
+    write_image(
+        &input,
+        &img,
+        compression("zip"),
+        exr::meta::attribute::LineOrder::Increasing,
+    );
+    let out = run(&["resize", s(&input), "--scale", "2", "-o", s(&output)]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert_eq!(message.trim().lines().count(), 1, "{message}");
+    assert!(
+        message.contains("far.exr") && message.contains("would not fit OpenEXR's 32-bit"),
+        "{message}"
+    );
+    assert!(!output.exists());
+    // Halved, it fits.
+    ok(&[
+        "resize",
+        s(&input),
+        "--scale",
+        "0.5",
+        "-o",
+        s(&output),
+        "-q",
+    ]);
+    assert_eq!(read_image(&output).y, 536_870_500);
+}

@@ -131,6 +131,7 @@ pub fn add(
 mod tests {
     use super::*;
     use crate::engine::graph::{Node, Op};
+    use crate::io::text::Utf8Text;
     use crate::ops::declare::Operation;
     use crate::ops::layers::Selection;
     use crate::ops::testing::{compute, image, sample};
@@ -236,16 +237,11 @@ mod tests {
         let out = compute(op.as_ref(), &[&input]).unwrap();
         for (c, before) in out.channels.iter().zip(&input.channels) {
             let (plane_out, plane_in) = (
-                &out.planes[out.channel_index(&c.name.to_string()).unwrap()],
-                &input.planes[input.channel_index(&before.name.to_string()).unwrap()],
+                &out.planes[out.channel_index(&c.name.utf8()).unwrap()],
+                &input.planes[input.channel_index(&before.name.utf8()).unwrap()],
             );
             let changed = plane_out != plane_in;
-            assert_eq!(
-                changed,
-                c.name.to_string().starts_with("diffuse."),
-                "{}",
-                c.name
-            );
+            assert_eq!(changed, c.name.utf8().starts_with("diffuse."), "{}", c.name);
         }
     }
 

@@ -13,6 +13,7 @@ use super::declare::{input, params, Operation};
 use super::layers::Selection;
 use crate::engine::graph::Op;
 use crate::engine::strip::{Rows, RowsMut};
+use crate::io::text::Utf8Text;
 use crate::params::{DEFOCUS_SCALE, FOCUS, MAX_RADIUS};
 use aperture::Footprints;
 use exr::meta::attribute::ChannelDescription;
@@ -159,7 +160,7 @@ impl Op for Defocus {
             let range = out.row_range(y);
             let row = &sums[i * columns.len() * k..(i + 1) * columns.len() * k];
             for (c, channel) in out.channels.iter().enumerate() {
-                let name = channel.name.to_string();
+                let name = channel.name.utf8();
                 match names.iter().position(|n| *n == name) {
                     Some(n) => {
                         for (value, sum) in result.iter_mut().zip(row.chunks(k)) {

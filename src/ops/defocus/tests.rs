@@ -3,6 +3,7 @@
 
 use super::aperture::{need_table, Footprints};
 use super::*;
+use crate::io::text::Utf8Text;
 use exr::meta::attribute::{IntegerBounds, SampleType};
 
 /// The spec's gather, written directly: for each output pixel every sample
@@ -23,7 +24,7 @@ fn exact(op: &Defocus, input: &Rows, out: &mut Rows) {
     };
     for y in out.valid_rows() {
         for c in 0..out.channels.len() {
-            let name = out.channels[c].name.to_string();
+            let name = out.channels[c].name.utf8();
             if !names.contains(&name) {
                 let range = out.row_range(y);
                 let s = input.channel_index(&name).unwrap();
@@ -98,7 +99,7 @@ fn frame(
         for c in 0..rows.channels.len() {
             let values: Vec<f32> = (0..width)
                 .map(
-                    |_| match (rows.channels[c].name.to_string().as_str(), rng.next()) {
+                    |_| match (rows.channels[c].name.utf8().as_str(), rng.next()) {
                         ("Z", u) if u < 0.04 => {
                             [focus, 0.0, -1.0, f32::NAN, f32::INFINITY][(u * 125.0) as usize]
                         }
