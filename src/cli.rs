@@ -406,6 +406,11 @@ pub struct RunArgs {
         value_enum
     )]
     pub burn_in_corner: Option<crate::io::burn_in::Corner>,
+    /// Write a slate first: frame (the shot's first - 1), black, with the
+    /// job's output, frames, inputs, timecode, fps and attributes in white;
+    /// only by a run that starts at the shot's first frame.
+    #[arg(help_heading = "Output", long)]
+    pub slate: bool,
     /// Skip frames whose output already exists and decodes completely.
     #[arg(help_heading = "Run control", long)]
     pub resume: bool,

@@ -26,6 +26,7 @@ use crate::ops::layers::Selection;
 use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{count, Report, Summary};
+use crate::slate::{Slate, SlateFrame};
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -84,6 +85,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
                 transfer: run.transfer.or(plan.transfer),
                 burn_in: run.burn_in.clone().or(plan.burn_in),
                 burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
+                slate: run.slate || plan.slate,
                 ..run
             };
             let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
@@ -272,16 +274,18 @@ pub(crate) fn input_job(
         Some(text) => parse_frame_list(text)?,
         None => default_frames(&inputs, &times)?,
     };
-    // A timecode start is the shot's first frame's: the first frame without
-    // --frames, so that each chunk of a farm job counts from the same one.
+    // The shot's frames are the inputs' (all of them without --frames), so
+    // that each chunk of a farm job counts its timecode from the same first
+    // frame, and only the chunk starting there writes the slate.
+    let shot = match &run.frames {
+        Some(_) if attributes.needs_anchor() || run.slate => default_frames(&inputs, &times)?,
+        _ => frames.clone(),
+    };
     if attributes.needs_anchor() {
-        let first = match &run.frames {
-            Some(_) => default_frames(&inputs, &times)?[0],
-            None => frames[0],
-        };
-        attributes.anchor(first);
+        attributes.anchor(shot[0]);
     }
     check_frame_count(&frames, &output)?;
+    let slate = slate_frame(run, &output, &frames, &shot)?;
     if run.all_parts {
         check_all_parts(texts, &parts, layers)?;
     }
@@ -310,6 +314,7 @@ pub(crate) fn input_job(
         all_parts: run.all_parts,
         attributes,
         media,
+        slate,
     };
     let summary = Summary {
         warnings: crate::engine::assumptions::warnings(&job, texts),
@@ -392,6 +397,7 @@ pub(crate) fn plate_job(
     let media = review(&output, run)?;
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
+    let slate = slate_frame(run, &output, &frames, &frames)?;
     Ok(Job {
         inputs: Vec::new(),
         times: Vec::new(),
@@ -423,7 +429,75 @@ pub(crate) fn plate_job(
         all_parts: false,
         attributes,
         media,
+        slate,
     })
+}
+
+/// The slate `run` writes, if it asks for one and starts at the shot's first
+/// frame: numbered one before it, introducing `shot`'s frames. Its number
+/// must be a file of its own: the output a sequence, not one of its frames.
+fn slate_frame(
+    run: &RunArgs,
+    output: &FramePattern,
+    frames: &[i64],
+    shot: &[i64],
+) -> Result<Option<SlateFrame>> {
+    if !run.slate || frames[0] != shot[0] {
+        return Ok(None);
+    }
+    let frame = shot[0] - 1;
+    if !output.is_sequence() || frames.contains(&frame) {
+        return Err(Error::usage(format!(
+            "--slate writes frame {frame} before the shot's first: the output {} needs a frame \
+             number (####) and no frame {frame} of its own",
+            output.display()
+        )));
+    }
+    let range = format_frame_list(shot);
+    Ok(Some(SlateFrame { frame, range }))
+}
+
+/// The job writing `job`'s slate: a black frame of its first frame's
+/// display window, in its output's format, with the job's metadata.
+fn slate_job(job: &Job) -> Result<Option<Job>> {
+    let Some(slate) = &job.slate else {
+        return Ok(None);
+    };
+    let plans = plan_parts(job, &job.frames[0])?;
+    let header = &plans[0].header;
+    let display = header.shared_attributes.display_window;
+    let lines = crate::slate::lines(job, slate, header);
+    let mut graph = GraphBuilder::default();
+    graph.add(Slate::new(display, &lines), &[]);
+    Ok(Some(Job {
+        inputs: Vec::new(),
+        times: Vec::new(),
+        merged: Vec::new(),
+        parts: Vec::new(),
+        view: None,
+        level: None,
+        output: job.output.clone(),
+        frames: vec![FrameSources {
+            frame: slate.frame,
+            inputs: Vec::new(),
+        }],
+        graph: graph.finish(),
+        compression: Some(header.compression),
+        header_base: HeaderBase::New(display),
+        blocks: job.blocks,
+        strip_rows: job.strip_rows,
+        zip_level: job.zip_level,
+        resume: job.resume,
+        keep_going: false,
+        rows: job.rows,
+        all_parts: false,
+        attributes: job.attributes.clone(),
+        media: job.media.clone().map(|review| Review {
+            burn_in: None,
+            ..review
+        }),
+        slate: None,
+    }))
 }
 
 /// How `output` is written when it names review media (PNG, JPEG, TIFF),
@@ -528,7 +602,9 @@ pub(crate) fn run_job(
     run: &RunArgs,
     summary: Summary,
 ) -> Result<Option<DryRun>> {
-    let (reads, writes) = job.files();
+    let slate = slate_job(job)?;
+    let (reads, mut writes) = job.files();
+    writes.extend(slate.iter().flat_map(|slate| slate.files().1));
     refuse_overwriting(reads.iter().cloned(), writes.iter().cloned())?;
     if !run.quiet {
         for warning in &summary.warnings {
@@ -543,10 +619,13 @@ pub(crate) fn run_job(
             }
         }
         if !run.quiet {
+            if let Some(slate) = &slate {
+                print!("{}", dry_run_listing(slate, run.json));
+            }
             print!("{}", dry_run_listing(job, run.json));
             eprintln!(
                 "{label}: would write {} to {}, holding at most {} MiB at once",
-                count(job.frames.len(), "frame"),
+                count(writes.len(), "frame"),
                 job.output.display(),
                 bound.div_ceil(1 << 20)
             );
@@ -556,6 +635,9 @@ pub(crate) fn run_job(
             reads,
             writes: writes.into_iter().map(|(_, path)| path).collect(),
         }));
+    }
+    if let Some(slate) = &slate {
+        write_slate(slate, label, run)?;
     }
     let (report, summary) = run_with_progress(job, label, run, summary)?;
     planted_delay();
@@ -578,6 +660,27 @@ pub(crate) fn run_job(
         ));
     }
     Ok(None)
+}
+
+/// Writes (or with --resume keeps) the slate, quietly: the run's report
+/// counts its own frames.
+fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
+    let quiet = RunArgs {
+        quiet: true,
+        json: false,
+        ..run.clone()
+    };
+    let (_, summary) = run_with_progress(slate, label, &quiet, Summary::default())?;
+    if summary.interrupted {
+        return Err(Error::new(
+            Kind::Interrupted,
+            "interrupted; no partial frame was left",
+        ));
+    }
+    match summary.failed.first() {
+        Some((frame, message)) => Err(Error::new(Kind::Input, format!("slate {frame}: {message}"))),
+        None => Ok(()),
+    }
 }
 
 /// Test builds only: `EXRCOMP_TEST_DELAY=SECONDS` makes a run that much

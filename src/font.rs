@@ -1,5 +1,5 @@
-//! A 5x7 bitmap font for the contact sheet's labels: capitals, digits and a
-//! little punctuation (lower case is drawn as capitals), each glyph seven
+//! A 5x7 bitmap font for the contact sheet's labels, burn-ins and slates:
+//! capitals, digits and a little punctuation (lower case is drawn as capitals), each glyph seven
 //! rows of five pixels, `#` lit.
 
 /// Glyph size in pixels, before scaling, and the advance between glyphs.
@@ -55,6 +55,8 @@ const GLYPHS: &[(char, &str)] = &[
     (')', ".#...|..#..|...#.|...#.|...#.|..#..|.#..."),
     ('=', ".....|.....|#####|.....|#####|.....|....."),
     ('?', ".###.|#...#|....#|...#.|..#..|.....|..#.."),
+    ('#', ".#.#.|.#.#.|#####|.#.#.|#####|.#.#.|.#.#."),
+    ('_', ".....|.....|.....|.....|.....|.....|#####"),
 ];
 
 /// Whether pixel (x, y) of `c`'s glyph is lit; a character the font lacks

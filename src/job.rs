@@ -50,6 +50,7 @@ const WRITE_KEYS: &[&str] = &[
     "transfer",
     "burn_in",
     "burn_in_corner",
+    "slate",
 ];
 const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
 
@@ -85,6 +86,8 @@ pub struct JobPlan {
     pub transfer: Option<Transfer>,
     pub burn_in: Option<String>,
     pub burn_in_corner: Option<Corner>,
+    /// The write node's `slate = true`.
+    pub slate: bool,
 }
 
 /// A file name in the job as a path: relative ones are relative to the job
@@ -538,6 +541,7 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
         transfer: option(at, out, "transfer", |t| Transfer::from_str(t, false))?,
         burn_in: option(at, out, "burn_in", |t| Ok(t.to_string()))?,
         burn_in_corner: option(at, out, "burn_in_corner", |t| Corner::from_str(t, false))?,
+        slate: out.flag(at, "slate")?,
     })
 }
 

@@ -18,3 +18,4 @@ pub mod job;
 pub mod ops;
 pub mod params;
 pub mod report;
+pub mod slate;

@@ -95,6 +95,8 @@ pub struct Job {
     pub attributes: Edits,
     /// Review media (PNG, JPEG, TIFF) instead of EXR: how they are written.
     pub media: Option<Review>,
+    /// The slate this run writes before its frames (`--slate`), if any.
+    pub slate: Option<crate::slate::SlateFrame>,
 }
 
 /// A review media output: its format's options, and a burn-in.

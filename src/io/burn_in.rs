@@ -94,20 +94,11 @@ impl BurnIn {
             .map(|piece| match piece {
                 Piece::Text(text) => text.clone(),
                 Piece::Frame(width) => format!("{:0width$}", fields.frame),
-                Piece::Timecode => fields
-                    .header
-                    .shared_attributes
-                    .time_code
-                    .as_ref()
-                    .map(super::timecode::display)
-                    .unwrap_or_else(|| "-".to_string()),
+                Piece::Timecode => timecode(fields.header).unwrap_or_else(|| "-".to_string()),
                 Piece::File => fields.file.map(name).unwrap_or_else(|| "-".to_string()),
                 Piece::Output => name(fields.output),
-                Piece::Attribute(wanted) => fields
-                    .header
-                    .all_named_attributes()
-                    .find(|(name, _)| name.eq_ignore_ascii_case(wanted.as_bytes()))
-                    .map(|(_, value)| attribute_text(&value))
+                Piece::Attribute(wanted) => attribute(fields.header, wanted)
+                    .map(|value| attribute_text(&value))
                     .unwrap_or_else(|| "-".to_string()),
             })
             .collect()
@@ -116,35 +107,64 @@ impl BurnIn {
     /// `text` placed in this burn-in's corner of an image of `width` x
     /// `height` pixels.
     pub fn label(&self, text: String, (width, height): (usize, usize)) -> Label {
-        let scale = (height / SCALE_PER).max(1);
+        let scale = scale(height);
         let margin = 2 * scale;
-        let box_width = font::text_width(&text) * scale + 2 * scale;
-        let box_height = font::HEIGHT * scale + 2 * scale;
+        let (box_width, box_height) = Label::size(&text, scale);
         let left = matches!(self.corner, Corner::BottomLeft | Corner::TopLeft);
         let top = matches!(self.corner, Corner::TopLeft | Corner::TopRight);
-        Label {
-            x: match left {
-                true => margin,
-                false => width.saturating_sub(margin + box_width),
-            },
-            y: match top {
-                true => margin,
-                false => height.saturating_sub(margin + box_height),
-            },
-            width: box_width,
-            height: box_height,
-            scale,
-            text: text.chars().collect(),
-        }
+        let x = match left {
+            true => margin,
+            false => width.saturating_sub(margin + box_width),
+        };
+        let y = match top {
+            true => margin,
+            false => height.saturating_sub(margin + box_height),
+        };
+        Label::new(&text, (x, y), scale)
     }
+}
+
+/// `lines` one under the other from the top-left corner of an image
+/// `height` pixels tall, at the burn-in's scale: a slate's text.
+pub fn lines(lines: &[String], height: usize) -> Vec<Label> {
+    let scale = scale(height);
+    let margin = 2 * scale;
+    let step = Label::size("", scale).1 + scale;
+    lines
+        .iter()
+        .enumerate()
+        .map(|(i, text)| Label::new(text, (margin, margin + i * step), scale))
+        .collect()
+}
+
+/// Font pixels per glyph pixel in an image `height` pixels tall.
+fn scale(height: usize) -> usize {
+    (height / SCALE_PER).max(1)
 }
 
 /// Image rows per font pixel: 5x7 glyphs 28 pixels tall on 1080 lines.
 pub const SCALE_PER: usize = 240;
 
+/// Attribute `wanted` of `header` (its name's case aside).
+pub(crate) fn attribute(header: &Header, wanted: &str) -> Option<AttributeValue> {
+    header
+        .all_named_attributes()
+        .find(|(name, _)| name.eq_ignore_ascii_case(wanted.as_bytes()))
+        .map(|(_, value)| value)
+}
+
+/// `header`'s timecode as `HH:MM:SS:FF`: the crate's field for one read,
+/// or the attribute `--timecode` sets.
+pub(crate) fn timecode(header: &Header) -> Option<String> {
+    match attribute(header, "timeCode")? {
+        AttributeValue::TimeCode(code) => Some(super::timecode::display(&code)),
+        _ => None,
+    }
+}
+
 /// An attribute's value as text: a string as it is, another type as
 /// `exrcomp info` prints it.
-fn attribute_text(value: &AttributeValue) -> String {
+pub(crate) fn attribute_text(value: &AttributeValue) -> String {
     match value {
         AttributeValue::Text(text) => text.to_string(),
         other => crate::info::value_text(other)
@@ -167,6 +187,24 @@ pub struct Label {
 }
 
 impl Label {
+    /// The box of `text` at `scale`: one font pixel of black round the glyphs.
+    fn size(text: &str, scale: usize) -> (usize, usize) {
+        let width = font::text_width(text) * scale + 2 * scale;
+        (width, font::HEIGHT * scale + 2 * scale)
+    }
+
+    fn new(text: &str, (x, y): (usize, usize), scale: usize) -> Label {
+        let (width, height) = Label::size(text, scale);
+        Label {
+            x,
+            y,
+            width,
+            height,
+            scale,
+            text: text.chars().collect(),
+        }
+    }
+
     /// Inside the box, whether pixel (x, y) is lit (white) or not (black);
     /// `None` outside it.
     pub fn pixel(&self, x: usize, y: usize) -> Option<bool> {
@@ -207,6 +245,22 @@ mod tests {
         assert_eq!(burn.text(&fields), "SH010 0007 studio");
         let burn = BurnIn::parse("{output} {timecode} {file}", Corner::TopRight).unwrap();
         assert_eq!(burn.text(&fields), "x.0007.jpg - -");
+        // --timecode's attribute, set among the others, is the frame's.
+        let code = exr::meta::attribute::TimeCode {
+            hours: 1,
+            ..Default::default()
+        };
+        header
+            .own_attributes
+            .other
+            .insert("timeCode".into(), AttributeValue::TimeCode(code));
+        let fields = Fields {
+            frame: 7,
+            header: &header,
+            file: None,
+            output: Path::new("out/x.0007.jpg"),
+        };
+        assert_eq!(burn.text(&fields), "x.0007.jpg 01:00:00:00 -");
         assert!(BurnIn::parse("{shot}", Corner::TopLeft).is_err());
         assert!(BurnIn::parse("{frame", Corner::TopLeft).is_err());
         assert!(BurnIn::parse("{frame:x}", Corner::TopLeft).is_err());

@@ -34,6 +34,7 @@ mod resize;
 mod review_media;
 mod sequences_and_errors;
 mod shuffle;
+mod slate;
 mod stack;
 mod stage_times;
 mod tiled;
