@@ -47,7 +47,7 @@ fn facts(path: &Path) -> Result<Facts> {
     // The crate's header also has what it computes: its `chunkCount` is
     // shown only where the file declares one, its `type` always (as OpenEXR,
     // which gives every part a type, and exrheader show it).
-    let held = std::fs::File::open(path)
+    let held = crate::io::reader::open_regular(path)
         .map(|f| attributes(&mut std::io::BufReader::new(f)))
         .map_err(|e| file.error(format!("cannot open: {e}")))?;
     let mut parts = Vec::new();

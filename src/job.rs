@@ -138,7 +138,8 @@ impl<'a> Source<'a> {
 /// The job file at `path`, its operations' lengths in pixels scaled by
 /// `proxy` when it is given.
 pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobPlan> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::io::reader::open_regular(path)
+        .and_then(std::io::read_to_string)
         .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
     let at = Source {
         proxy,

@@ -513,7 +513,7 @@ where
 /// that decodes whole, a JPEG from its start marker to its end marker
 /// (frames are renamed into place only once written whole).
 pub fn complete(path: &Path, format: Format) -> bool {
-    let Ok(file) = File::open(path) else {
+    let Ok(file) = super::reader::open_regular(path) else {
         return false;
     };
     let reader = std::io::BufReader::new(file);

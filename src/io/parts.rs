@@ -59,15 +59,20 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
     if !views.iter().any(|v| v == view) {
         return Err(file.error(unknown("view", view, &views.join(", "), &views)));
     }
-    let of_view = |h: &&exr::meta::header::Header| {
-        let attributes = &h.own_attributes;
-        attributes.view_name.as_ref().is_some_and(|n| n.is(view))
-            || attributes
-                .multi_view_names
-                .as_ref()
-                .is_some_and(|list| list.iter().any(|n| n.is(view)))
+    // A part whose `view` is the view holds it; a `multiView` list only
+    // names the views (a multi-part file lists them in every part), so a
+    // part listing it holds it only when no part is of that view.
+    let by_attribute = headers.iter().position(|h| {
+        let name = h.own_attributes.view_name.as_ref();
+        name.is_some_and(|n| n.is(view))
+    });
+    let by_list = || {
+        headers.iter().position(|h| {
+            let list = h.own_attributes.multi_view_names.as_ref();
+            list.is_some_and(|list| list.iter().any(|n| n.is(view)))
+        })
     };
-    Ok(headers.iter().position(|h| of_view(&h)).unwrap_or(0))
+    Ok(by_attribute.or_else(by_list).unwrap_or(0))
 }
 
 /// The views of a file, in order: its parts' `view` attributes and the

@@ -27,6 +27,30 @@ use std::ops::Range;
 use std::os::unix::fs::FileExt;
 use std::path::{Path, PathBuf};
 
+/// Opens `path` for reading if it is a regular file, without blocking: a
+/// FIFO, socket, device or directory is refused ("not a regular file (a
+/// FIFO)") rather than waited on or read forever.
+pub fn open_regular(path: &Path) -> std::io::Result<File> {
+    use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)?;
+    let kind = file.metadata()?.file_type();
+    let what = match () {
+        _ if kind.is_file() => return Ok(file),
+        _ if kind.is_dir() => "a directory",
+        _ if kind.is_fifo() => "a FIFO",
+        _ if kind.is_socket() => "a socket",
+        _ if kind.is_char_device() => "a character device",
+        _ if kind.is_block_device() => "a block device",
+        _ => "not a file",
+    };
+    Err(std::io::Error::other(format!(
+        "not a regular file ({what})"
+    )))
+}
+
 /// Largest decompressed block accepted. A header field can claim anything; this
 /// bound keeps a damaged file from making a codec allocate gigabytes. A 64K-wide
 /// float RGBA block of 32 lines is 32 MiB, so real files stay far below it.
@@ -108,7 +132,7 @@ impl ExrFile {
     /// Opens the file, reads and validates its headers and offset tables.
     pub fn open(path: &Path, frame: Option<i64>) -> Result<Self> {
         let err = |message: String| Error::input(path, frame, message);
-        let file = File::open(path).map_err(|e| err(format!("cannot open: {e}")))?;
+        let file = open_regular(path).map_err(|e| err(format!("cannot open: {e}")))?;
         let len = file
             .metadata()
             .map_err(|e| err(format!("cannot open: {e}")))?

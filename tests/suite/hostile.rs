@@ -533,3 +533,70 @@ fn assert_refused(out: &std::process::Output, words: [&str; 2], folder: &Path) {
         "nothing left"
     );
 }
+
+/// What is not a regular file (a FIFO, a character device, a directory) is
+/// refused at once, as an input or as one frame of a sequence, whatever the
+/// command: never opened for a read that would wait for a writer or never
+/// end.
+#[test]
+fn inputs_that_are_not_regular_files_are_refused_without_blocking() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let fifo = d.join("fifo.exr");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo");
+    write_sequence(d, "a", [1, 3], 7);
+    let frame = d.join("a.0002.exr");
+    std::process::Command::new("mkfifo")
+        .arg(&frame)
+        .status()
+        .unwrap();
+    std::fs::create_dir(d.join("dir.exr")).unwrap();
+    let paths = ["o.exr", "a.####.exr", "o.####.exr", "dir.exr"].map(|p| d.join(p));
+    let [out, seq, outs, dir_exr] = [0, 1, 2, 3].map(|i| s(&paths[i]));
+    let f = s(&fifo);
+    let cases: [(&[&str], String); 6] = [
+        (
+            &["transcode", f, "-o", out],
+            format!("{f}: cannot open: not a regular file (a FIFO)"),
+        ),
+        (
+            &["transcode", f, "-o", out, "--dry-run"],
+            format!("{f}: cannot open: not a regular file (a FIFO)"),
+        ),
+        (
+            &["info", f],
+            format!("{f}: cannot open: not a regular file (a FIFO)"),
+        ),
+        (
+            &["info", "/dev/zero"],
+            "/dev/zero: cannot open: not a regular file (a character device)".into(),
+        ),
+        (
+            &["info", dir_exr],
+            format!("{dir_exr}: cannot open: not a regular file (a directory)"),
+        ),
+        (
+            &["transcode", seq, "-o", outs],
+            "a.0002.exr (frame 2): cannot open: not a regular file (a FIFO)".into(),
+        ),
+    ];
+    for (args, message) in cases {
+        let ended = limited_within(args, Duration::from_secs(20));
+        assert!(!ended.timed_out, "{args:?} blocked");
+        assert_eq!(ended.code, Some(3), "{args:?}: {}", ended.stderr);
+        assert_eq!(
+            ended.stderr.lines().count(),
+            1,
+            "{args:?}: {}",
+            ended.stderr
+        );
+        assert!(
+            ended.stderr.contains(&message),
+            "{args:?}: {}",
+            ended.stderr
+        );
+    }
+    // The sequence's good frames are written; nothing is at the FIFO frame's output.
+    assert!(!d.join("o.exr").exists() && !d.join("o.0002.exr").exists());
+}

@@ -74,13 +74,24 @@ fn parts_are_chosen_by_name_index_view_and_option() {
     let bg_right = random_rgba(53, 0, 0, 24, 18, Kind::Half, true);
     let bg_left = random_rgba(54, -1, 0, 24, 20, Kind::Half, true);
     let (fg, bg) = (d.join("fg.exr"), d.join("bg.exr"));
-    write_parts(
+    // Every part also lists both views in `multiView`: a part's own `view`
+    // is the one it holds.
+    let zip = zip_scanlines();
+    write_parts_listing(
         &fg,
-        &[("right", "right", &fg_right), ("left", "left", &fg_left)],
+        &[
+            ("right", "right", &fg_right, zip),
+            ("left", "left", &fg_left, zip),
+        ],
+        true,
     );
-    write_parts(
+    write_parts_listing(
         &bg,
-        &[("right", "right", &bg_right), ("left", "left", &bg_left)],
+        &[
+            ("right", "right", &bg_right, zip),
+            ("left", "left", &bg_left, zip),
+        ],
+        true,
     );
     // Every part of bg comes out: the chosen one composited, the other
     // exactly bg's, each in its place.

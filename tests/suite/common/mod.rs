@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use exr::image::{AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer};
-use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, WritableImage};
+use exr::prelude::{Blocks, Compression, LayerAttributes, LineOrder, Text, WritableImage};
 use half::f16;
 use std::collections::{BTreeMap, BTreeSet};
 use std::io::{Read, Seek, Write};
@@ -410,7 +410,7 @@ pub fn write_encoded(path: &Path, img: &Img, encoding: Encoding) {
     image.write().to_file(path).expect("test image written");
 }
 
-fn zip_scanlines() -> Encoding {
+pub fn zip_scanlines() -> Encoding {
     Encoding {
         compression: Compression::ZIP16,
         blocks: Blocks::ScanLines,
@@ -442,12 +442,20 @@ pub fn write_parts(path: &Path, parts: &[(&str, &str, &Img)]) {
 /// A multi-part file: per part its name, its view, its pixels and how they
 /// are stored (compression, scanlines or tiles).
 pub fn write_encoded_parts(path: &Path, parts: &[(&str, &str, &Img, Encoding)]) {
+    write_parts_listing(path, parts, false);
+}
+
+/// As `write_encoded_parts`, with `listing` every part also listing all the
+/// parts' views in a `multiView` attribute (as some stereo writers do).
+pub fn write_parts_listing(path: &Path, parts: &[(&str, &str, &Img, Encoding)], listing: bool) {
+    let views: Vec<Text> = parts.iter().map(|&(_, view, _, _)| view.into()).collect();
     let layers: Vec<_> = parts
         .iter()
         .map(|&(name, view, img, encoding)| {
             let attributes = LayerAttributes {
                 layer_name: Some(name.into()),
                 view_name: Some(view.into()),
+                multi_view_names: listing.then(|| views.clone()),
                 ..Default::default()
             };
             layer(img, attributes, encoding)
