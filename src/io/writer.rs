@@ -83,7 +83,8 @@ pub fn remove_stale_temporaries(dir: &Path, inputs: &FileSet) {
             continue;
         }
         // Unlocked: its writer is gone (a lock is held until the rename).
-        if let Ok(file) = File::open(&path) {
+        // Only a regular file (opening a FIFO of that name would block).
+        if let Ok(file) = super::reader::open_regular(&path) {
             if file.try_lock().is_ok() {
                 let _ = fs::remove_file(&path);
             }

@@ -302,11 +302,22 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
         let b = std::fs::read(frame_path(&d.join("ref"), "t", frame)).unwrap();
         assert!(a == b, "frame {frame} differs from the uninterrupted run");
     }
-    // An input named as a temporary is read, never removed.
+    // An input named as a temporary is read, never removed; a FIFO named
+    // as one is neither opened (that would block) nor removed.
     let odd = d.join("o/.in.exr.exrcomp-4194307.tmp");
     std::fs::copy(frame_path(&d.join("o"), "t", 1), &odd).unwrap();
-    ok(&["transcode", s(&odd), "-o", s(&d.join("o/odd.exr")), "-q"]);
+    let fifo = d.join("o/.f.exr.exrcomp-4194308.tmp");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let out = d.join("o/odd.exr");
+    let args = ["transcode", s(&odd), "-o", s(&out), "-q"];
+    let ended = limited_within(&args, Duration::from_secs(60));
+    assert_eq!(ended.code, Some(0), "{}", ended.stderr);
     assert!(odd.exists(), "an input named as a temporary was removed");
+    assert!(fifo.exists(), "a FIFO named as a temporary was removed");
 }
 
 #[test]
