@@ -502,6 +502,19 @@ fn a_template_never_replaces_an_input_the_job_file_or_a_frame() {
     .unwrap();
     std::fs::write(d.join("c.0003.exr"), "a frame rendered earlier").unwrap();
     let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    // What the job reads, and a frame it wrote before.
+    let kept = [
+        "fg.0002.exr",
+        "bg.0007.exr",
+        "fg.0001.exr",
+        "shot.toml",
+        "c.0003.exr",
+    ];
+    let contents = || -> Vec<Vec<u8>> {
+        kept.iter()
+            .map(|f| std::fs::read(d.join(f)).unwrap())
+            .collect()
+    };
     for (farm, output, command, words) in [
         ("openjd", "fg.0002.exr", &over[..], "is the input"),
         ("deadline", "bg.0007.exr", &over[..], "is the input"),
@@ -510,16 +523,7 @@ fn a_template_never_replaces_an_input_the_job_file_or_a_frame() {
         ("openjd", "c.0003.exr", &over[..], "is the frame"),
         ("deadline", "c.0004.exr", &over[..], "is the frame"),
     ] {
-        let before: Vec<_> = [
-            "fg.0002.exr",
-            "bg.0007.exr",
-            "fg.0001.exr",
-            "shot.toml",
-            "c.0003.exr",
-        ]
-        .iter()
-        .map(|f| std::fs::read(d.join(f)).unwrap())
-        .collect();
+        let before = contents();
         let out = exrcomp()
             .args(["farm", farm, "--frames", "1-7", "-o", output, "--"])
             .args(command)
@@ -532,17 +536,7 @@ fn a_template_never_replaces_an_input_the_job_file_or_a_frame() {
             message.contains(words) && message.contains("refusing to overwrite"),
             "{farm} {output}: {message}"
         );
-        let after: Vec<_> = [
-            "fg.0002.exr",
-            "bg.0007.exr",
-            "fg.0001.exr",
-            "shot.toml",
-            "c.0003.exr",
-        ]
-        .iter()
-        .map(|f| std::fs::read(d.join(f)).unwrap())
-        .collect();
-        assert!(before == after, "{farm} -o {output} changed a file");
+        assert!(before == contents(), "{farm} -o {output} changed a file");
     }
 }
 
