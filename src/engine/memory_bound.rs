@@ -5,9 +5,6 @@
 use super::graph::{Graph, Node};
 use super::plan::FramePlan;
 
-/// The write buffer.
-const WRITE_BUFFER: u64 = 1 << 20;
-
 /// Program, thread stacks and allocator.
 const PROGRAM: u64 = 10 << 20;
 
@@ -15,12 +12,13 @@ const PROGRAM: u64 = 10 << 20;
 ///
 /// ```text
 /// W × [ Σ_inputs 3 (S + 2 L_i) b_i + Σ_inputs 2 S b_i
-///     + max_live Σ (S + 2 h_n) b_n + 5 S b_o ] + 1 MiB + 10 MiB
+///     + max_live Σ (S + 2 h_n) b_n + (5 + 2 B) S b_o ] + 10 MiB
 /// ```
 ///
 /// with an input's terms across the width it is decoded over (its data
 /// window read: none for a black input), and `S` at most the rows computed
-/// (a strip never holds more).
+/// (a strip never holds more), and `B` the batches of chunks the writer
+/// lets wait (`writer::IN_FLIGHT`), each with its bytes laid out.
 pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
     let width = plan.computed.size.width() as u64;
@@ -47,6 +45,7 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
         }
     }
     let windows = graph.peak(|n| (width * (s + 2 * halo[n]) * bytes(&plan.channels[n])) as usize);
-    let encode = 5 * s * width * bytes(&plan.header.channels.list);
-    decode + windows as u64 + encode + WRITE_BUFFER + PROGRAM
+    let waiting = 2 * crate::io::writer::IN_FLIGHT as u64;
+    let encode = (5 + waiting) * s * width * bytes(&plan.header.channels.list);
+    decode + windows as u64 + encode + PROGRAM
 }

@@ -220,10 +220,11 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
                 (*columns, read)
             })
             .collect();
-        let (strips, passed) = match &pass {
-            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone())?,
-            None => (decode_regions(&mut cursors, &regions)?, Vec::new()),
-        };
+        // On a pool thread, as the compose stage's strips are.
+        let (strips, passed) = rayon::scope(|_| match &pass {
+            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone()),
+            None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
+        })?;
         let decoded = Decoded {
             rows,
             strips,
@@ -278,7 +279,10 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                     .as_mut()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
                 passed.extend(decoded.passed);
-                match composer.push(frame, decoded.rows, decoded.strips) {
+                // On a pool thread: each node's bands then run as nested
+                // tasks, not as one call into the pool per node from here.
+                let (rows, strips) = (decoded.rows, decoded.strips);
+                match rayon::scope(|_| composer.push(frame, rows, strips)) {
                     Ok(Some(rows)) => match written_rows(rows, written) {
                         Some(rows) => {
                             let top = written.position.y();

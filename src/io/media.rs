@@ -288,7 +288,7 @@ type Next<'a> = &'a mut dyn FnMut() -> Result<Option<Strip>>;
 type Fail<'a> = &'a dyn Fn(&dyn std::fmt::Display) -> Error;
 
 fn write_png(
-    out: &mut BufWriter<File>,
+    out: &mut BufWriter<&File>,
     bits: Bits,
     (width, height): (usize, usize),
     alpha: bool,
@@ -323,7 +323,7 @@ fn write_png(
 }
 
 fn write_jpeg(
-    out: &mut BufWriter<File>,
+    out: &mut BufWriter<&File>,
     quality: u8,
     (width, height): (usize, usize),
     next: Next,
@@ -419,7 +419,7 @@ impl jpeg_encoder::ImageBuffer for &Pulled<'_> {
 const TIFF_STRIP_ROWS: usize = 16;
 
 fn write_tiff(
-    out: &mut BufWriter<File>,
+    out: &mut BufWriter<&File>,
     bits: Bits,
     size: (usize, usize),
     alpha: bool,

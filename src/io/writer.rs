@@ -9,14 +9,20 @@
 
 use super::overwrite::FileSet;
 use super::reader::ExrFile;
+use crate::engine::stage_time::{self, Stage};
 use crate::error::{Error, Result};
+use crossbeam_channel::{bounded, Receiver, Sender};
 use exr::block::chunk::Chunk;
+use exr::block::chunk::CompressedBlock;
 use exr::meta::attribute::{AttributeValue, BlockType, KeyCode};
 use exr::meta::header::Header;
 use exr::meta::{MetaData, Requirements};
 use std::fs::{self, File};
-use std::io::{BufWriter, Seek, SeekFrom, Write};
+use std::io::{BufWriter, Write};
+use std::os::fd::AsRawFd;
+use std::os::unix::fs::FileExt;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 /// A compressed block and its index in the output's offset table.
 pub struct IndexedChunk {
@@ -115,6 +121,9 @@ impl Parts<'_> {
 /// Writes the headers of `parts`, then the chunks `next` yields (`Ok(None)`
 /// ends them), then the carried parts' chunks. An error from `next` abandons
 /// the file and is returned as is.
+///
+/// The chunks get their places in the file here, in order, and each batch
+/// is written there by a task on the pool (`Batches`).
 pub fn write_file(
     path: &Path,
     frame: Option<i64>,
@@ -122,71 +131,88 @@ pub fn write_file(
     mut next: impl FnMut() -> Result<Option<Vec<IndexedChunk>>>,
 ) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
-    write_in_place(path, frame, |buffered| {
-        let mut out = Counting {
-            inner: buffered,
-            position: 0,
-        };
+    place(path, frame, |file| {
         let headers = &parts.headers;
         let count = headers.len();
         let bytes = header_bytes(headers).map_err(|e| fail(&e))?;
-        out.write_all(&bytes).map_err(|e| fail(&e))?;
-        // The offset tables, filled in once the chunks' places are known.
-        let tables = out.position;
+        file.write_all_at(&bytes, 0).map_err(|e| fail(&e))?;
+        // The offset tables, written once the chunks' places are known.
+        let tables = bytes.len() as u64;
         let total: usize = headers.iter().map(|h| h.chunk_count).sum();
-        out.write_all(&vec![0; total * 8]).map_err(|e| fail(&e))?;
+        let mut position = tables + total as u64 * 8;
         let mut offsets: Vec<Vec<u64>> = headers
             .iter()
             .map(|h| Vec::with_capacity(h.chunk_count))
             .collect();
-        let streamed = &parts.streamed;
-        // The streamed part being written: the first not yet complete.
-        let mut current = 0;
-        while let Some(chunks) = next()? {
-            for mut c in chunks {
-                while streamed
-                    .get(current)
-                    .is_some_and(|&p| offsets[p].len() == headers[p].chunk_count)
-                {
-                    current += 1;
+        let batches = Batches::new(file, count);
+        rayon::in_place_scope(|scope| {
+            let streamed = &parts.streamed;
+            // The streamed part being written: the first not yet complete.
+            let mut current = 0;
+            while let Some(chunks) = next()? {
+                let at = position;
+                let mut batch = Vec::with_capacity(chunks.len());
+                for mut c in chunks {
+                    while streamed
+                        .get(current)
+                        .is_some_and(|&p| offsets[p].len() == headers[p].chunk_count)
+                    {
+                        current += 1;
+                    }
+                    let Some(&part) = streamed.get(current) else {
+                        return Err(Error::internal("a chunk arrived after the last part's"));
+                    };
+                    let done = &mut offsets[part];
+                    if c.index != done.len() {
+                        return Err(Error::internal(format!(
+                            "chunk {} of part {part} arrived where chunk {} was due",
+                            c.index,
+                            done.len()
+                        )));
+                    }
+                    done.push(position);
+                    c.chunk.layer_index = part;
+                    position += chunk_size(&c.chunk, count);
+                    batch.push(c.chunk);
                 }
-                let Some(&part) = streamed.get(current) else {
-                    return Err(Error::internal("a chunk arrived after the last part's"));
-                };
-                let done = &mut offsets[part];
-                if c.index != done.len() {
+                batches.spawn(scope, batch, at).map_err(|e| fail(&e))?;
+            }
+            for &part in streamed {
+                let chunk_count = headers[part].chunk_count;
+                if offsets[part].len() != chunk_count {
                     return Err(Error::internal(format!(
-                        "chunk {} of part {part} arrived where chunk {} was due",
-                        c.index,
-                        done.len()
+                        "{} of part {part}'s {chunk_count} chunks were written",
+                        offsets[part].len()
                     )));
                 }
-                done.push(out.position);
-                c.chunk.layer_index = part;
-                c.chunk.write(&mut out, count).map_err(|e| fail(&e))?;
             }
-        }
-        for &part in streamed {
-            let chunk_count = headers[part].chunk_count;
-            if offsets[part].len() != chunk_count {
-                return Err(Error::internal(format!(
-                    "{} of part {part}'s {chunk_count} chunks were written",
-                    offsets[part].len()
-                )));
-            }
-        }
-        if let Some(source) = parts.carried {
+            let Some(source) = parts.carried else {
+                return Ok(());
+            };
+            let (mut at, mut batch) = (position, Vec::new());
             for (part, done) in offsets.iter_mut().enumerate() {
                 if streamed.contains(&part) {
                     continue;
                 }
                 for index in 0..headers[part].chunk_count {
-                    let chunk = source.read_chunk(part, index)?;
-                    done.push(out.position);
-                    chunk.write(&mut out, count).map_err(|e| fail(&e))?;
+                    let mut chunk = source.read_chunk(part, index)?;
+                    chunk.layer_index = part;
+                    done.push(position);
+                    position += chunk_size(&chunk, count);
+                    batch.push(chunk);
+                    if position - at >= CARRIED_BATCH {
+                        let full = std::mem::take(&mut batch);
+                        batches.spawn(scope, full, at).map_err(|e| fail(&e))?;
+                        at = position;
+                    }
                 }
             }
-        }
+            if !batch.is_empty() {
+                batches.spawn(scope, batch, at).map_err(|e| fail(&e))?;
+            }
+            Ok(())
+        })?;
+        batches.finished().map_err(|e| fail(&e))?;
         let table_bytes: Vec<u8> = offsets
             .iter()
             .flatten()
@@ -195,11 +221,119 @@ pub fn write_file(
         if table_bytes.len() != total * 8 {
             return Err(Error::internal("a carried part was not copied whole"));
         }
-        let file = out.inner;
-        file.seek(SeekFrom::Start(tables))
-            .and_then(|_| file.write_all(&table_bytes))
+        file.write_all_at(&table_bytes, tables)
             .map_err(|e| fail(&e))
     })
+}
+
+/// Bytes of carried chunks gathered before a batch is written.
+const CARRIED_BATCH: u64 = 4 << 20;
+
+/// Batches of chunks waiting to be written; more wait on the writer thread.
+pub const IN_FLIGHT: usize = 2;
+
+/// Writes batches of placed chunks (`pwrite`) as tasks on the pool: the
+/// kernel's copy into the page cache, the writer's largest cost, runs
+/// beside the other stages' tasks instead of on one thread, and the writes
+/// of frames in flight overlap. At most `IN_FLIGHT` batches wait, so memory
+/// stays bounded by the channels'.
+struct Batches<'f> {
+    file: &'f File,
+    /// Parts in the file: a multi-part file's chunks begin with their part.
+    parts: usize,
+    /// The first write that failed.
+    failed: Mutex<Option<std::io::Error>>,
+    slots: (Sender<()>, Receiver<()>),
+}
+
+impl<'f> Batches<'f> {
+    fn new(file: &'f File, parts: usize) -> Self {
+        Batches {
+            file,
+            parts,
+            failed: Mutex::new(None),
+            slots: bounded(IN_FLIGHT),
+        }
+    }
+
+    /// Writes `batch`, placed from `at`, on the pool once a slot is free;
+    /// an earlier batch's failure is returned instead.
+    fn spawn<'s>(
+        &'s self,
+        scope: &rayon::Scope<'s>,
+        batch: Vec<Chunk>,
+        at: u64,
+    ) -> std::io::Result<()> {
+        self.check()?;
+        stage_time::wait(Stage::Write, || self.slots.0.send(()))
+            .map_err(|_| std::io::Error::other("the writer's slots closed"))?;
+        scope.spawn(move |_| {
+            if let Err(e) = stage_time::task(Stage::Write, || self.write(&batch, at)) {
+                self.lock().get_or_insert(e);
+            }
+            let _ = self.slots.1.recv();
+        });
+        Ok(())
+    }
+
+    fn write(&self, batch: &[Chunk], at: u64) -> std::io::Result<()> {
+        let size: u64 = batch.iter().map(|c| chunk_size(c, self.parts)).sum();
+        let mut bytes = Vec::with_capacity(size as usize);
+        for chunk in batch {
+            chunk
+                .write(&mut bytes, self.parts)
+                .map_err(std::io::Error::other)?;
+        }
+        if bytes.len() as u64 != size {
+            return Err(std::io::Error::other("a chunk's size was miscounted"));
+        }
+        self.file.write_all_at(&bytes, at)?;
+        // Starts the batch's write-back here, on the pool, so that the sync
+        // before the rename finds little left to do on the writer thread.
+        // Only a hint: the sync reports any error.
+        // SAFETY: plain system call on an open descriptor.
+        unsafe {
+            libc::sync_file_range(
+                self.file.as_raw_fd(),
+                at as libc::off64_t,
+                bytes.len() as libc::off64_t,
+                libc::SYNC_FILE_RANGE_WRITE,
+            )
+        };
+        Ok(())
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, Option<std::io::Error>> {
+        self.failed.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    fn check(&self) -> std::io::Result<()> {
+        match self.lock().take() {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+
+    /// The first failure, once every batch has been written.
+    fn finished(&self) -> std::io::Result<()> {
+        self.check()
+    }
+}
+
+/// The bytes `chunk` takes in a file of `parts` parts.
+fn chunk_size(chunk: &Chunk, parts: usize) -> u64 {
+    let part = if parts > 1 { 4 } else { 0 };
+    let block = match &chunk.compressed_block {
+        CompressedBlock::ScanLine(b) => 8 + b.compressed_pixels_le.len(),
+        CompressedBlock::Tile(b) => 20 + b.compressed_pixels_le.len(),
+        CompressedBlock::DeepScanLine(b) => {
+            28 + b.compressed_pixel_offset_table.len() + b.compressed_sample_data_le.len()
+        }
+        CompressedBlock::DeepTile(b) => {
+            40 + b.compressed_pixel_offset_table.len() + b.compressed_sample_data_le.len()
+        }
+    };
+    (part + block) as u64
 }
 
 /// Creates `path`'s folder, runs `write` on a buffered file at
@@ -209,8 +343,19 @@ pub fn write_file(
 pub fn write_in_place(
     path: &Path,
     frame: Option<i64>,
-    write: impl FnOnce(&mut BufWriter<File>) -> Result<()>,
+    write: impl FnOnce(&mut BufWriter<&File>) -> Result<()>,
 ) -> Result<()> {
+    place(path, frame, |file| {
+        let mut buffered = BufWriter::with_capacity(1 << 20, file);
+        write(&mut buffered)?;
+        buffered.flush().map_err(|e| Error::output(path, frame, e))
+    })
+}
+
+/// Creates `path`'s folder, runs `write` on the file at `path`'s
+/// temporary name, then syncs it to disk and renames it into place; on any
+/// error the temporary file is removed and the error returned as it is.
+fn place(path: &Path, frame: Option<i64>, write: impl FnOnce(&File) -> Result<()>) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         fs::create_dir_all(dir).map_err(|e| fail(&format!("cannot create folder: {e}")))?;
@@ -218,9 +363,7 @@ pub fn write_in_place(
     let temporary = temporary_path(path);
     let result = (|| {
         let file = create_locked(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
-        let mut buffered = BufWriter::with_capacity(1 << 20, file);
-        write(&mut buffered)?;
-        let file = buffered.into_inner().map_err(|e| fail(&e.error()))?;
+        write(&file)?;
         file.sync_all().map_err(|e| fail(&e))?;
         fs::rename(&temporary, path).map_err(|e| fail(&format!("cannot rename into place: {e}")))
     })();
@@ -228,25 +371,6 @@ pub fn write_in_place(
         let _ = fs::remove_file(&temporary);
     }
     result
-}
-
-/// A writer that knows how many bytes went through it: where each chunk
-/// starts, without flushing the buffer to ask the file.
-struct Counting<W> {
-    inner: W,
-    position: u64,
-}
-
-impl<W: Write> Write for Counting<W> {
-    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
-        let n = self.inner.write(bytes)?;
-        self.position += n as u64;
-        Ok(n)
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        self.inner.flush()
-    }
 }
 
 /// The magic number, version and flags, and each header's attributes

@@ -722,13 +722,13 @@ fn amount(template: &str, name: &str) -> u64 {
 /// one frame of `over` of the generated fg (half RGBA, float Z and vectors:
 /// 20 bytes a pixel) and bg (12 bytes, as the result), W wide, strips of S
 /// rows, ZIP blocks of 16 lines: both inputs and the merge alive at once,
-/// none with a halo.
+/// none with a halo; the writer's two batches waiting, each also laid out.
 fn over_bound_by_hand(w: u64, s: u64) -> u64 {
     let (l, fg, bg) = (16, 20, 12);
     let decode = w * (fg + bg) * (3 * (s + 2 * l) + 2 * s);
     let windows = w * s * (fg + bg + bg);
-    let encode = 5 * s * w * bg;
-    (decode + windows + encode + (1 << 20) + (10 << 20)).div_ceil(1 << 20)
+    let encode = (5 + 2 * 2) * s * w * bg;
+    (decode + windows + encode + (10 << 20)).div_ceil(1 << 20)
 }
 
 /// OpenJD's host requirements: the task's threads as vcpus and the
@@ -769,8 +769,8 @@ fn openjd_jobs_ask_for_their_threads_and_memory_and_carry_the_settings() {
     assert_eq!(amount(&template, "amount.worker.vcpu"), 1, "{template}");
     let memory = amount(&template, "amount.worker.memory");
     // On one thread a block is 1024 x 16 x 12 = 196,608 bytes: a strip is
-    // ceil(1 MiB / block) = 6 blocks, 96 rows.
-    assert_eq!(memory, over_bound_by_hand(1024, 96), "{template}");
+    // ceil(2 MiB / block) = 11 blocks, 176 rows.
+    assert_eq!(memory, over_bound_by_hand(1024, 176), "{template}");
     assert_eq!(
         template.matches("\"--threads\", \"1\"").count(),
         1,
