@@ -221,7 +221,7 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
             })
             .collect();
         let (strips, passed) = match &pass {
-            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone())?,
+            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, &regions, rows.clone())?,
             None => (decode_regions(&mut cursors, &regions)?, Vec::new()),
         };
         let decoded = Decoded {
