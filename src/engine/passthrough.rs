@@ -94,7 +94,14 @@ impl PassThrough {
             }
         };
         let source_header = plan.header_of(source);
-        let grid = output_grid(out);
+        let (input, grid) = (source_header.data_window(), output_grid(out));
+        // The output's blocks, moved, start on the source's grid: all of
+        // them, or none.
+        let (x, y) = (
+            window.position.x() + shift.0 - input.position.x(),
+            window.position.y() + shift.1 - input.position.y(),
+        );
+        let on_grid = x % grid.block.x() as i32 == 0 && y % grid.block.y() as i32 == 0;
         // The chunks' samples, channel after channel, must be the output's
         // blocks': the same channels in order (names aside), none dropped.
         // A subsampled channel's lines in a block depend on where the block
@@ -110,12 +117,13 @@ impl PassThrough {
         // Its blocks must be the output's: scanline blocks of the same
         // lines, or tiles of the same size (of level 0, as written).
         let same = laid_out
+            && on_grid
             && tests.iter().all(|&(_, first, _, _)| first != source)
             && plan.deep[source].is_none()
             && source_header.blocks.has_tiles() == out.blocks.has_tiles()
             && plan.levels[source].block == grid.block
             && plan.levels[source].index == exr::math::Vec2(0, 0)
-            && plan.windows[node] == source_header.data_window()
+            && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
             && source_header.compression == out.compression;
         same.then_some(PassThrough {
@@ -152,7 +160,7 @@ impl PassThrough {
 
     /// The source's chunk that is output block `block` (its pixels, in the
     /// output's coordinates): one of the same pixels once moved, inside
-    /// every node's data window.
+    /// every node's data window. The grids line up (`find`).
     fn chunk(&self, plan: &FramePlan, block: IntegerBounds) -> Option<usize> {
         if intersection(block, self.inside) != block {
             return None;
@@ -166,17 +174,11 @@ impl PassThrough {
             at.position.x() - input.position.x(),
             at.position.y() - input.position.y(),
         );
-        let (width, lines) = (level.block.x() as i32, level.block.y() as i32);
-        if x % width != 0 || y % lines != 0 {
-            return None;
-        }
-        // The chunk's pixels, the last column and row of blocks cut short.
-        let chunk = (x / width, y / lines);
-        let covers = IntegerBounds::new(
-            (input.position.x() + x, input.position.y() + y),
-            (width as usize, lines as usize),
-        );
-        (intersection(covers, input) == at).then(|| level.chunk(chunk.0 as usize, chunk.1 as usize))
+        // Inside the source's window, so at or right of and below its
+        // corner. The chunk's pixels: the last column and row cut short.
+        let covers = intersection(IntegerBounds::new(at.position, level.block), input);
+        let (column, row) = (x as usize / level.block.x(), y as usize / level.block.y());
+        (covers == at).then(|| level.chunk(column, row))
     }
 
     /// The output blocks within `rows` (whole blocks of the output's grid)
