@@ -67,12 +67,12 @@ pub trait Op: Send + Sync {
         false
     }
 
-    /// For an op whose result is its one input's samples as they are, in
-    /// the same pixels, wherever both data windows hold them (a crop, a pad,
-    /// a channel rename or drop): per output channel, the input channel it
-    /// carries. What lets an output block be a chunk of the input below it
+    /// For an op whose result is its one input's samples as they are,
+    /// wherever both data windows hold them, in the same pixels (a crop, a
+    /// pad, a channel rename or drop) or moved by whole pixels (a cut): what
+    /// lets an output block be a chunk of the input below it
     /// (`passthrough.rs`); `None` for every other op.
-    fn carries(&self, _inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+    fn carries(&self, _inputs: &[&[ChannelDescription]]) -> Option<Carried> {
         None
     }
 
@@ -321,6 +321,14 @@ impl Graph {
     }
 }
 
+/// What an op keeps of its one input's samples (`Op::carries`).
+pub struct Carried {
+    /// Per output channel, the input channel it carries.
+    pub channels: Vec<usize>,
+    /// Output pixel (x, y) is input pixel (x + dx, y + dy).
+    pub shift: (i32, i32),
+}
+
 /// `rect` grown by `by` on every side (an empty one stays empty).
 pub fn grow(rect: IntegerBounds, by: i32) -> IntegerBounds {
     if rect.size.area() == 0 || by == 0 {
@@ -350,6 +358,11 @@ pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
     let x1 = a.end().x().max(b.end().x());
     let y1 = a.end().y().max(b.end().y());
     IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+}
+
+/// `w` moved by (dx, dy).
+pub fn moved(w: IntegerBounds, (dx, dy): (i32, i32)) -> IntegerBounds {
+    IntegerBounds::new((w.position.x() + dx, w.position.y() + dy), w.size)
 }
 
 /// The window both cover; empty (zero size at the origin) when they do not

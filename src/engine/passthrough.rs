@@ -4,10 +4,13 @@
 //! the two files share compression, channels and block grid, the output block
 //! is that input's chunk: checked to decompress, then written as it is, with
 //! no decode, composite or encode. On a CG element over a plate most blocks
-//! are such blocks.
+//! are such blocks. Ops of one input that keep its samples (a crop, a
+//! rename) or move them by whole blocks (a cut) pass blocks the same way,
+//! stored at the output's coordinates. Rules: specs/architecture.md,
+//! "Blocks passed through".
 
-use super::decode::{decode_strip, InputCursor};
-use super::graph::{Graph, Node};
+use super::decode::{decode_strip, InputCursor, Region};
+use super::graph::{intersection, moved, Graph, Node};
 use super::plan::{output_grid, FramePlan};
 use super::stage_time::{self, Stage};
 use super::strip::Rows;
@@ -15,6 +18,7 @@ use crate::error::Result;
 use crate::io::writer::IndexedChunk;
 use exr::block::chunk::CompressedBlock;
 use exr::math::Vec2;
+use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -24,12 +28,15 @@ pub struct PassThrough {
     /// The input whose chunks are copied (the bottom of the merges).
     pub source: usize,
     /// Per merge from the output down: the merge node, the input its first
-    /// input reads, and its second input's node. All first inputs must be
+    /// input reads, its second input's node, and the merge's pixel (x + dx,
+    /// y + dy) that is the output's (x, y). All first inputs must be
     /// transparent black over a block for it to pass.
-    tests: Vec<(usize, usize, usize)>,
-    /// The rows where every node from the output down to the source holds
-    /// the source's pixels (inside each crop's window).
-    rows: Range<i32>,
+    tests: Vec<(usize, usize, usize, (i32, i32))>,
+    /// The output's pixels that every node from the output down to the
+    /// source holds the source's pixels in (inside each crop's window).
+    inside: IntegerBounds,
+    /// The source's pixel (x + dx, y + dy) is the output's (x, y).
+    shift: (i32, i32),
 }
 
 /// An output block made of an input's chunk.
@@ -45,10 +52,6 @@ struct PassedBlock {
 impl PassThrough {
     /// Whether `plan`'s output can take chunks from an input, and which.
     pub fn find(graph: &Graph, plan: &FramePlan) -> Option<Self> {
-        // Inputs behind a resize (or a cut) stream in rows of their own.
-        if !plan.regions.shared() {
-            return None;
-        }
         let (out, window) = (&plan.header, plan.window());
         // Per output channel as written, the channel of the node reached
         // whose samples it is.
@@ -60,15 +63,12 @@ impl PassThrough {
             .map(|c| plan.channels[output].iter().position(|o| o.name == c.name))
             .collect::<Option<_>>()?;
         let mut tests = Vec::new();
-        // The rows every node on the way down holds the source's pixels in.
-        let (mut top, mut bottom) = (window.position.y(), window.end().y());
+        // The output's pixels every node on the way down holds the source's
+        // pixels in, and where the node reached has the output's (x, y).
+        let (mut inside, mut shift) = (window, (0, 0));
         let mut node = output;
         let source = loop {
-            let w = plan.windows[node];
-            if (w.position.x(), w.size.width()) != (window.position.x(), window.size.width()) {
-                return None;
-            }
-            (top, bottom) = (top.max(w.position.y()), bottom.min(w.end().y()));
+            inside = intersection(inside, moved(plan.windows[node], (-shift.0, -shift.1)));
             match &graph.nodes[node] {
                 Node::Input(i) if node != output => break *i,
                 Node::Op { op, inputs, .. } if op.passes_second() && inputs.len() == 2 => {
@@ -81,71 +81,104 @@ impl PassThrough {
                         .iter()
                         .map(|&k| second.iter().position(|c| *c == merged[k]))
                         .collect::<Option<_>>()?;
-                    tests.push((node, first, inputs[1]));
+                    tests.push((node, first, inputs[1], shift));
                     node = inputs[1];
                 }
                 Node::Op { op, inputs, .. } if inputs.len() == 1 => {
                     let carried = op.carries(&[&plan.channels[inputs[0]]])?;
-                    map = map.iter().map(|&k| carried[k]).collect();
+                    map = map.iter().map(|&k| carried.channels[k]).collect();
+                    shift = (shift.0 + carried.shift.0, shift.1 + carried.shift.1);
                     node = inputs[0];
                 }
                 _ => return None,
             }
         };
         let source_header = plan.header_of(source);
-        let input = source_header.data_window();
-        let grid = output_grid(out);
-        let lines = grid.block.y() as i32;
+        let (input, grid) = (source_header.data_window(), output_grid(out));
+        // The output's blocks, moved, start on the source's grid: all of
+        // them, or none.
+        let (x, y) = (
+            window.position.x() + shift.0 - input.position.x(),
+            window.position.y() + shift.1 - input.position.y(),
+        );
+        let on_grid = x % grid.block.x() as i32 == 0 && y % grid.block.y() as i32 == 0;
         // The chunks' samples, channel after channel, must be the output's
         // blocks': the same channels in order (names aside), none dropped.
+        // A subsampled channel's lines in a block depend on where the block
+        // starts, so those blocks do not move.
         let list = &source_header.channels.list;
         let laid_out = map.iter().copied().eq(0..list.len())
             && out.channels.list.iter().zip(list.iter()).all(|(o, i)| {
                 (o.sample_type, o.sampling, o.quantize_linearly)
                     == (i.sample_type, i.sampling, i.quantize_linearly)
+                    && (shift == (0, 0) || i.sampling == Vec2(1, 1))
             });
         // The source is decoded after the inputs tested, so it is not one.
         // Its blocks must be the output's: scanline blocks of the same
-        // columns, or tiles of the same size (of level 0, as written).
+        // lines, or tiles of the same size (of level 0, as written).
         let same = laid_out
-            && tests.iter().all(|&(_, first, _)| first != source)
+            && on_grid
+            && tests.iter().all(|&(_, first, _, _)| first != source)
             && plan.deep[source].is_none()
             && source_header.blocks.has_tiles() == out.blocks.has_tiles()
             && plan.levels[source].block == grid.block
             && plan.levels[source].index == exr::math::Vec2(0, 0)
             && plan.windows[node] == input
             && matches!(out.compression, Compression::ZIP1 | Compression::ZIP16)
-            && source_header.compression == out.compression
-            && (input.position.y() - window.position.y()) % lines == 0;
+            && source_header.compression == out.compression;
         same.then_some(PassThrough {
             source,
             tests,
-            rows: top..bottom,
+            inside,
+            shift,
         })
     }
 
-    /// Decodes strip `rows` of every input but the source's chunks of the
-    /// blocks that pass, which come back checked, as output chunks.
+    /// Decodes `regions` of every input (those of output strip `rows`) but
+    /// the source's chunks of the blocks that pass, which come back checked,
+    /// as output chunks.
     pub fn decode(
         &self,
         plan: &FramePlan,
         graph: &Graph,
         cursors: &mut [InputCursor],
-        columns: (i32, usize),
+        regions: &[Region],
         rows: Range<i32>,
     ) -> Result<(Vec<Rows>, Vec<IndexedChunk>)> {
         let source = self.source;
-        let regions = vec![(columns, rows.clone()); cursors.len()];
-        let mut strips = decode_strip(cursors, &regions, |i| i != source, |_, _| false)?;
-        let blocks = self.blocks(plan, graph, &strips, rows.clone());
+        let mut strips = decode_strip(cursors, regions, |i| i != source, |_, _| false)?;
+        let blocks = self.blocks(plan, graph, &strips, rows);
         let passed = |k: usize| blocks.iter().any(|b| b.chunk == k);
-        let mut own = decode_strip(cursors, &regions, |i| i == source, |_, k| passed(k))?;
+        let mut own = decode_strip(cursors, regions, |i| i == source, |_, k| passed(k))?;
         strips[source] = own[source].take();
         let strips = strips
             .into_iter()
             .map(|s| s.expect("every input decoded"))
             .collect();
         Ok((strips, self.chunks(plan, &blocks)?))
+    }
+
+    /// The source's chunk that is output block `block` (its pixels, in the
+    /// output's coordinates): one of the same pixels once moved, inside
+    /// every node's data window. The grids line up (`find`).
+    fn chunk(&self, plan: &FramePlan, block: IntegerBounds) -> Option<usize> {
+        if intersection(block, self.inside) != block {
+            return None;
+        }
+        let (input, level) = (
+            plan.header_of(self.source).data_window(),
+            plan.levels[self.source],
+        );
+        let at = moved(block, self.shift);
+        let (x, y) = (
+            at.position.x() - input.position.x(),
+            at.position.y() - input.position.y(),
+        );
+        // Inside the source's window, so at or right of and below its
+        // corner. The chunk's pixels: the last column and row cut short.
+        let covers = intersection(IntegerBounds::new(at.position, level.block), input);
+        let (column, row) = (x as usize / level.block.x(), y as usize / level.block.y());
+        (covers == at).then(|| level.chunk(column, row))
     }
 
     /// The output blocks within `rows` (whole blocks of the output's grid)
@@ -158,9 +191,7 @@ impl PassThrough {
         rows: Range<i32>,
     ) -> Vec<PassedBlock> {
         let window = plan.window();
-        let input = plan.header_of(self.source).data_window();
-        let (inside, end) = (&self.rows, input.end().y());
-        let (grid, source) = (output_grid(&plan.header), plan.levels[self.source]);
+        let grid = output_grid(&plan.header);
         let lines = grid.block.y() as i32;
         let (top, bottom) = (window.position.y(), window.end().y());
         let first = rows.start.max(top);
@@ -171,30 +202,39 @@ impl PassThrough {
             .step_by(lines as usize)
             .collect();
         let row_of_blocks = |y0: i32| {
-            let mut passed = Vec::new();
             let y1 = (y0 + lines).min(bottom);
-            // The input's chunk must hold exactly these rows, every node
-            // the source's pixels.
-            let same_end = (y0 + lines).min(end) == y1;
-            if y1 > rows.end || y0 < inside.start || y1 > inside.end || !same_end {
-                return passed;
+            let row = ((y0 - top) / lines) as usize;
+            // The blocks of the row that are chunks of the source, by column.
+            let copied: Vec<(usize, usize, Range<i32>)> = (0..grid.blocks.x())
+                .filter_map(|column| {
+                    let x0 = window.position.x() + (column * grid.block.x()) as i32;
+                    let x1 = (x0 + grid.block.x() as i32).min(window.end().x());
+                    let block =
+                        IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize));
+                    let chunk = self.chunk(plan, block)?;
+                    Some((column, chunk, x0..x1))
+                })
+                .collect();
+            if y1 > rows.end || copied.is_empty() {
+                return Vec::new();
             }
-            let (row, source_row) = ((y0 - top) / lines, (y0 - input.position.y()) / lines);
             // Whether every merge's first input hides nothing over the
-            // columns `x0..x1` of these rows (a copy of them, for a tile).
-            let hidden = |columns: Option<(i32, i32)>| {
-                self.tests.iter().all(|&(merge, first, second)| {
+            // columns `x0..x1` of these rows (a copy of them, for a tile),
+            // in the merge's pixels.
+            let hidden = |columns: Option<&Range<i32>>| {
+                self.tests.iter().all(|&(merge, first, second, (dx, dy))| {
                     let Node::Op { op, .. } = &graph.nodes[merge] else {
                         return false;
                     };
                     let strip = strips[first]
                         .as_ref()
                         .expect("tested inputs are decoded first");
-                    let second = &plan.channels[second];
+                    let (second, rows) = (&plan.channels[second], y0 + dy..y1 + dy);
                     match columns {
-                        None => op.hides_nothing(strip, second, y0..y1),
-                        Some((x0, x1)) => {
-                            op.hides_nothing(&strip.copy_region(y0..y1, x0..x1), second, y0..y1)
+                        None => op.hides_nothing(strip, second, rows),
+                        Some(x) => {
+                            let copy = strip.copy_region(rows.clone(), x.start + dx..x.end + dx);
+                            op.hides_nothing(&copy, second, rows)
                         }
                     }
                 })
@@ -202,18 +242,15 @@ impl PassThrough {
             // A whole row of blocks passes at once (every scanline block, and
             // most tile rows under a small element).
             let whole = hidden(None);
-            for column in 0..grid.blocks.x() {
-                let x0 = window.position.x() + (column * grid.block.x()) as i32;
-                let x1 = (x0 + grid.block.x() as i32).min(window.end().x());
-                if whole || (grid.blocks.x() > 1 && hidden(Some((x0, x1)))) {
-                    passed.push(PassedBlock {
-                        index: grid.chunk(column, row as usize),
-                        chunk: source.chunk(column, source_row as usize),
-                        tile: Vec2(column, row as usize),
-                    });
-                }
-            }
-            passed
+            copied
+                .into_iter()
+                .filter(|(_, _, x)| whole || (grid.blocks.x() > 1 && hidden(Some(x))))
+                .map(|(column, chunk, _)| PassedBlock {
+                    index: grid.chunk(column, row),
+                    chunk,
+                    tile: Vec2(column, row),
+                })
+                .collect::<Vec<_>>()
         };
         starts
             .into_par_iter()
@@ -222,17 +259,26 @@ impl PassThrough {
     }
 
     /// The source's chunks for `blocks`, each checked to decompress, as
-    /// output chunks.
+    /// output chunks, placed where the output has them.
     fn chunks(&self, plan: &FramePlan, blocks: &[PassedBlock]) -> Result<Vec<IndexedChunk>> {
         let (file, part) = (&plan.inputs[self.source], plan.parts[self.source]);
+        let (top, lines) = (
+            plan.window().position.y(),
+            output_grid(&plan.header).block.y(),
+        );
         blocks
             .par_iter()
             .map(|block| {
                 let mut chunk =
                     stage_time::task(Stage::Decode, || file.checked_zip_chunk(part, block.chunk))?;
-                // A tile's coordinates count from the data window's top.
-                if let CompressedBlock::Tile(tile) = &mut chunk.compressed_block {
-                    tile.coordinates.tile_index = block.tile;
+                // A tile's coordinates count from the data window's corner,
+                // a scanline block's y is its first row's.
+                match &mut chunk.compressed_block {
+                    CompressedBlock::Tile(tile) => tile.coordinates.tile_index = block.tile,
+                    CompressedBlock::ScanLine(line) => {
+                        line.y_coordinate = top + (block.tile.y() * lines) as i32
+                    }
+                    _ => unreachable!("flat chunks only"),
                 }
                 Ok(IndexedChunk {
                     index: block.index,

@@ -222,7 +222,7 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
             .collect();
         // On a pool thread, as the compose stage's strips are.
         let (strips, passed) = rayon::scope(|_| match &pass {
-            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, columns, rows.clone()),
+            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, &regions, rows.clone()),
             None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
         })?;
         let decoded = Decoded {

@@ -9,7 +9,7 @@
 //! specs/ops.md, "crop, pad".
 
 use super::declare::{input, params, Args, Length, Operation, Value};
-use crate::engine::graph::{intersection, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{intersection, moved, Carried, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::OnceLock;
@@ -237,10 +237,6 @@ impl Crop {
     }
 }
 
-fn moved(w: IntegerBounds, (dx, dy): (i32, i32)) -> IntegerBounds {
-    IntegerBounds::new((w.position.x() + dx, w.position.y() + dy), w.size)
-}
-
 impl Op for Crop {
     fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
         if let Window::Place(format, center) = self.window {
@@ -294,10 +290,13 @@ impl Op for Crop {
         inputs[0].to_vec()
     }
 
-    /// A crop or pad: the input's pixels where it has data. Not a cut or a
-    /// placement, which move them (and read regions of their own).
-    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
-        (!self.cut).then(|| (0..inputs[0].len()).collect())
+    /// The input's pixels where it has data: in place (a crop, a pad), or
+    /// moved by whole pixels (a cut, a placement).
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Carried> {
+        Some(Carried {
+            channels: (0..inputs[0].len()).collect(),
+            shift: self.shift(),
+        })
     }
 
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
@@ -319,8 +318,12 @@ impl Op for Crop {
             return Ok(());
         }
         // A cut: output pixel (x, y) is input pixel (x + dx, y + dy), where
-        // the input has data.
-        let output = IntegerBounds::new((out.x, out.y), (out.width, out.height));
+        // both have data (a merge it feeds computes rows and columns beyond
+        // it, which stay black).
+        let output = intersection(
+            IntegerBounds::new((out.x, out.y), (out.width, out.height)),
+            out.valid,
+        );
         let have = intersection(
             moved(output, (dx, dy)),
             intersection(

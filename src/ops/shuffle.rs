@@ -4,7 +4,7 @@
 //! Grammar and choices: specs/ops.md, "Channel shuffles".
 
 use super::declare::{input, params, Operation};
-use crate::engine::graph::Op;
+use crate::engine::graph::{Carried, Op};
 use crate::engine::strip::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use exr::meta::attribute::{ChannelDescription, SampleType, Text};
@@ -294,15 +294,19 @@ impl Op for Shuffle {
 
     /// `shuffle` without constants; never `copy`, whose blocks hold A's
     /// channels, which B's chunks lack.
-    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Vec<usize>> {
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Carried> {
         if self.into {
             return None;
         }
         let outputs = self.resolve(inputs).ok()?;
-        outputs
+        let channels = outputs
             .iter()
             .map(|o| o.source.ok().map(|(_, i)| i))
-            .collect()
+            .collect::<Option<_>>()?;
+        Some(Carried {
+            channels,
+            shift: (0, 0),
+        })
     }
 
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {

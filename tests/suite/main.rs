@@ -27,6 +27,7 @@ mod metadata_and_time;
 mod over_reference;
 mod overnight;
 mod passthrough;
+mod passthrough_moved;
 mod peers;
 mod proxy;
 mod real_files;

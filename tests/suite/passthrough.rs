@@ -31,17 +31,18 @@ fn write(dir: &Path, name: &str, img: &Img) -> PathBuf {
 }
 
 /// The compressed bytes of every chunk of `path`, in table order.
-fn chunks(path: &Path) -> Vec<Vec<u8>> {
+pub fn chunks(path: &Path) -> Vec<Vec<u8>> {
     let file = ExrFile::open(path, None).unwrap();
     (0..file.header(0).chunk_count)
         .map(|k| match file.read_chunk(0, k).unwrap().compressed_block {
             CompressedBlock::ScanLine(block) => block.compressed_pixels_le,
-            _ => panic!("scanline chunks"),
+            CompressedBlock::Tile(tile) => tile.compressed_pixels_le,
+            _ => panic!("flat chunks"),
         })
         .collect()
 }
 
-fn check_run(args: &[&str]) {
+pub fn check_run(args: &[&str]) {
     let out = run(args);
     assert!(out.status.success(), "{args:?}: {}", stderr(&out));
 }
@@ -193,7 +194,7 @@ fn copied(out: &Path, input: &Path, shift: isize) -> Vec<bool> {
 
 /// `oiiotool IN ARGS -o THEIRS` and `idiff -fail 0` against `ours`, when
 /// both peers are there.
-fn same_as_oiiotool(input: &Path, args: &[&str], ours: &Path) {
+pub fn same_as_oiiotool(input: &Path, args: &[&str], ours: &Path) {
     let (Some(oiiotool), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {
         return;
     };
@@ -262,7 +263,7 @@ fn crops_and_pads_on_the_block_grid_copy_the_chunks_they_keep_whole() {
         "b.exr",
         &random_rgba(11, 0, 0, WIDTH, HEIGHT, Kind::Half, true),
     );
-    let (out, encoded) = (d.join("out.exr"), d.join("encoded.exr"));
+    let out = d.join("out.exr");
     let cases: [Case; 6] = [
         // Rows on the grid: 16..48; 16..56 (its last block cut short).
         (
@@ -314,19 +315,26 @@ fn crops_and_pads_on_the_block_grid_copy_the_chunks_they_keep_whole() {
         ),
     ];
     for (command, args, theirs, first, expected) in cases {
-        let mut all = vec![command, s(&b), "-o", s(&out)];
-        all.extend(args);
-        check_run(&all);
-        // The pixels as the op computes them where nothing is copied.
-        all[3] = s(&encoded);
-        all.extend(["--compression", "piz"]);
-        check_run(&all);
-        assert_identical(&read_image(&out), &read_image(&encoded));
+        run_as_encoded(command, &b, args, theirs, &out);
         let got = copied(&out, &b, first);
         assert_eq!(got, expected, "{command} {args:?}");
-        assert_peers_read(&out);
-        same_as_oiiotool(&b, theirs, &out);
     }
+}
+
+/// `COMMAND INPUT ARGS -o OUT`, its pixels checked against the same run
+/// encoded (PIZ: nothing copied, the pixels as the ops compute them), read by
+/// the peers and compared with oiiotool's `INPUT THEIRS`.
+pub fn run_as_encoded(command: &str, input: &Path, args: &[&str], theirs: &[&str], out: &Path) {
+    let encoded = out.with_extension("piz.exr");
+    let mut all = vec![command, s(input), "-o", s(out)];
+    all.extend(args);
+    check_run(&all);
+    all[3] = s(&encoded);
+    all.extend(["--compression", "piz"]);
+    check_run(&all);
+    assert_identical(&read_image(out), &read_image(&encoded));
+    assert_peers_read(out);
+    same_as_oiiotool(input, theirs, out);
 }
 
 #[test]
