@@ -1,5 +1,7 @@
 //! Runs the graph over strips as they arrive: each node keeps a window of the
-//! rows it produced, as long as a consumer's halo still needs them.
+//! rows it produced, as long as a consumer's halo still needs them. The
+//! nodes of a zone read bottom-up (`Regions::upward`) grow their windows
+//! upwards, bottom row first.
 
 use super::graph::{Graph, Node, Op};
 use super::region::{rows_of, Regions};
@@ -36,6 +38,8 @@ pub struct Composer<'g> {
     window: IntegerBounds,
     /// Per node: the rows and columns its window covers (`region.rs`).
     rects: Vec<IntegerBounds>,
+    /// Per node: whether it is computed bottom-up.
+    upward: Vec<bool>,
 }
 
 impl<'g> Composer<'g> {
@@ -51,12 +55,18 @@ impl<'g> Composer<'g> {
         let window = regions.rect(graph.output());
         let top = window.position.y();
         let rects: Vec<IntegerBounds> = (0..graph.nodes.len()).map(|n| regions.rect(n)).collect();
+        let upward: Vec<bool> = (0..graph.nodes.len()).map(|n| regions.upward(n)).collect();
         let windows = (0..graph.nodes.len())
             .map(|n| {
                 let rect = rects[n];
+                // Empty, at the row computed first.
+                let first = match upward[n] {
+                    true => rect.end().y(),
+                    false => rect.position.y(),
+                };
                 Rows::zeros(
                     rect.position.x(),
-                    rect.position.y(),
+                    first,
                     rect.size.width(),
                     0,
                     channels[n].clone(),
@@ -79,6 +89,7 @@ impl<'g> Composer<'g> {
             emit_multiple,
             window,
             rects,
+            upward,
         }
     }
 
@@ -86,35 +97,66 @@ impl<'g> Composer<'g> {
         self.window.end().y()
     }
 
-    /// How far node `n` can compute from its inputs' windows, from `start`.
+    /// Where node `n` computes next: the end of its window, or its start
+    /// computing bottom-up.
+    fn frontier(&self, n: usize) -> i32 {
+        match self.upward[n] {
+            true => self.windows[n].y,
+            false => self.windows[n].end(),
+        }
+    }
+
+    /// Whether node `n` holds every row it will read of input `i` for rows
+    /// `asked` of its own (reached from its frontier): `i` has computed all
+    /// its rows, or as far as `asked` reaches in its direction.
+    fn holds(&self, i: usize, asked: IntegerBounds) -> bool {
+        let (held, rect) = (self.frontier(i), self.rects[i]);
+        match self.upward[i] {
+            true => held <= rect.position.y() || asked.position.y().max(rect.position.y()) >= held,
+            false => held >= rect.end().y() || asked.end().y().min(rect.end().y()) <= held,
+        }
+    }
+
+    /// How far node `n` can compute from its inputs' windows, from its
+    /// frontier `start` (downwards, or upwards for a node computed so).
     fn computable(&self, n: usize, op: &dyn Op, inputs: &[usize], start: i32) -> i32 {
-        let bottom = self.rects[n].end().y();
-        // A source (no inputs) produces as far as the inputs were fed.
-        let ready = inputs
-            .iter()
-            .map(|&i| self.windows[i].end())
-            .min()
-            .unwrap_or(self.fed);
+        let (top, bottom) = (self.rects[n].position.y(), self.rects[n].end().y());
+        let up = self.upward[n];
         if op.request(self.rects[n]).is_none() {
-            // The fast path: inputs share the node's rows.
-            return if ready >= bottom {
-                ready
-            } else {
-                ready - op.halo() as i32
+            // The fast path: inputs share the node's rows (and its order).
+            let halo = op.halo() as i32;
+            return match up {
+                // A source (no inputs) computes all its rows at once.
+                true => match inputs.iter().map(|&i| self.frontier(i)).max() {
+                    Some(ready) if ready > top => ready + halo,
+                    _ => top,
+                },
+                false => {
+                    // A source produces as far as the inputs were fed.
+                    let ready = inputs.iter().map(|&i| self.frontier(i)).min();
+                    match ready.unwrap_or(self.fed) {
+                        ready if ready >= bottom => ready,
+                        ready => ready - halo,
+                    }
+                }
             };
         }
-        // Resampling: the last row whose request the inputs hold (requests
-        // grow with the rows asked, so a bisection finds it).
-        let fits = |end: i32| {
-            let asked = op.request(rows_of(self.rects[n], &(start..end)));
-            inputs.iter().all(|&i| {
-                let (held, rect) = (self.windows[i].end(), self.rects[i]);
-                let asked = asked.expect("a resampling op").end().y();
-                held >= rect.end().y() || asked.min(rect.end().y()) <= held
-            })
+        // Resampling: the farthest row whose request the inputs hold
+        // (requests grow with the rows asked, so a bisection finds it).
+        let fits = |to: i32| {
+            let rows = match up {
+                true => to..start,
+                false => start..to,
+            };
+            let asked = op.request(rows_of(self.rects[n], &rows));
+            let asked = asked.expect("a resampling op");
+            inputs.iter().all(|&i| self.holds(i, asked))
         };
-        let (mut good, mut bad) = (start, bottom + 1);
-        while bad - good > 1 {
+        let (mut good, mut bad) = match up {
+            true => (start, top - 1),
+            false => (start, bottom + 1),
+        };
+        while (bad - good).abs() > 1 {
             let mid = good + (bad - good) / 2;
             match fits(mid) {
                 true => good = mid,
@@ -139,20 +181,31 @@ impl<'g> Composer<'g> {
             match graph_node {
                 Node::Input(i) => {
                     let strip = strips[*i].take().expect("one strip per input");
-                    self.windows[n].append(strip);
+                    match self.upward[n] {
+                        true => self.windows[n].prepend(strip),
+                        false => self.windows[n].append(strip),
+                    }
                 }
                 Node::Op { op, inputs, .. } => {
-                    let start = self.windows[n].end();
+                    let start = self.frontier(n);
                     let end = self.computable(n, op.as_ref(), inputs, start);
-                    if end > start {
+                    let rows = match self.upward[n] {
+                        true => end..start,
+                        false => start..end,
+                    };
+                    if !rows.is_empty() {
                         // Computed in place, band by band on the pool: nodes
                         // come after their inputs, so those are borrowed apart.
                         let (earlier, rest) = self.windows.split_at_mut(n);
                         let node = &mut rest[0];
-                        node.grow((end - start) as usize);
+                        let height = rows.len();
+                        match self.upward[n] {
+                            true => node.grow_up(height),
+                            false => node.grow(height),
+                        }
                         let args: Vec<&Rows> = inputs.iter().map(|&i| &earlier[i]).collect();
-                        let band = band_rows((end - start) as usize, node.width);
-                        node.bands(start, band)
+                        let band = band_rows(height, node.width);
+                        node.bands_in(rows, band)
                             .into_par_iter()
                             .try_for_each(|mut out| {
                                 stage_time::task(Stage::Compose, || {
@@ -193,29 +246,52 @@ impl<'g> Composer<'g> {
     }
 
     /// Drops the rows of node `n` that no consumer will read again (its
-    /// consumers have all computed what they can from this strip).
+    /// consumers have all computed what they can from this strip): those
+    /// before the first row a consumer's rows still to compute read, or
+    /// after the last for a node computed bottom-up.
     fn forget_used_rows(&mut self, n: usize) {
-        let mut keep_from = if n == self.graph.output() {
-            self.emitted
-        } else {
-            i32::MAX
+        let up = self.upward[n];
+        let mut keep = match (n == self.graph.output(), up) {
+            (true, _) => self.emitted,
+            (false, true) => i32::MIN,
+            (false, false) => i32::MAX,
         };
         for &c in &self.consumers[n] {
             let Node::Op { op, .. } = &self.graph.nodes[c] else {
                 continue;
             };
-            let end = self.windows[c].end();
-            // The first row the consumer's next output row reads.
-            let first = match op.request(self.rects[c]) {
-                None => end - op.halo() as i32,
-                Some(_) if end >= self.rects[c].end().y() => i32::MAX,
-                Some(_) => op
-                    .request(rows_of(self.rects[c], &(end..end + 1)))
-                    .map_or(end, |r| r.position.y()),
+            let (frontier, rect) = (self.frontier(c), self.rects[c]);
+            let needed = match op.request(rect) {
+                // The same zone, so the same order: the halo behind.
+                None if up => frontier + op.halo() as i32,
+                None => frontier - op.halo() as i32,
+                // What its rows still to compute request: beyond the next
+                // row's footprint where the consumer reads the other way
+                // from this node's order (a zone both orders read).
+                Some(_) => {
+                    let rest = match self.upward[c] {
+                        true => rect.position.y()..frontier,
+                        false => frontier..rect.end().y(),
+                    };
+                    if rest.is_empty() {
+                        continue;
+                    }
+                    let asked = op.request(rows_of(rect, &rest)).expect("a resampling op");
+                    match up {
+                        true => asked.end().y(),
+                        false => asked.position.y(),
+                    }
+                }
             };
-            keep_from = keep_from.min(first);
+            keep = match up {
+                true => keep.max(needed),
+                false => keep.min(needed),
+            };
         }
-        self.windows[n].drop_rows_before(keep_from);
+        match up {
+            true => self.windows[n].drop_rows_from(keep),
+            false => self.windows[n].drop_rows_before(keep),
+        }
     }
 }
 

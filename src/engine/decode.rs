@@ -23,7 +23,9 @@ use std::sync::Arc;
 /// A chunk's rows in each plane of a strip, to be written.
 type ChunkRows<'a> = Vec<&'a mut [MaybeUninit<u8>]>;
 
-/// Reads one input of a frame, strip after strip, top to bottom.
+/// Reads one input of a frame, strip after strip, top to bottom or (a zone
+/// read bottom-up, `Regions::upward`) bottom to top: chunks are read through
+/// the offset table, in any order whatever the file's line order.
 pub struct InputCursor {
     pub file: Arc<ExrFile>,
     pub part: usize,
@@ -34,6 +36,8 @@ pub struct InputCursor {
     /// The decoded chunks of the last block row, kept when it reaches into
     /// the next strip.
     carried: Vec<(usize, UncompressedBlock)>,
+    /// Strips come bottom to top: the block row carried is the first.
+    pub upward: bool,
     /// Set for a deep input: strips come from flattening its samples.
     deep: Option<Arc<DeepInput>>,
 }
@@ -48,6 +52,7 @@ impl InputCursor {
             window,
             level,
             carried: Vec::new(),
+            upward: false,
             deep: None,
         }
     }
@@ -193,13 +198,22 @@ impl InputCursor {
         for (_, block) in blocks.iter() {
             copy_block(block, window, &mut strip, rows);
         }
-        // The last block row may hold rows of the next strip: keep it decoded.
+        // The last block row read (the first, reading upwards) may hold rows
+        // of the next strip: keep it decoded.
+        let upward = self.upward;
         let reaches_on = |(_, block): &(usize, UncompressedBlock)| {
             let index = block.index;
-            window.position.y() + (index.pixel_position.y() + index.pixel_size.y()) as i32
-                > rows.end
+            let top = window.position.y() + index.pixel_position.y() as i32;
+            match upward {
+                true => top < rows.start,
+                false => top + index.pixel_size.y() as i32 > rows.end,
+            }
         };
-        self.carried = match rows.end < window.end().y() {
+        let more = match upward {
+            true => rows.start > window.position.y(),
+            false => rows.end < window.end().y(),
+        };
+        self.carried = match more {
             true => blocks.drain(..).filter(reaches_on).collect(),
             false => Vec::new(),
         };

@@ -197,26 +197,42 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         Some(_) => None,
         None => PassThrough::find(&job.graph, plan),
     };
-    // Per input, its columns and the first row not yet read.
-    let mut fed: Vec<((i32, usize), i32)> = (0..plan.inputs.len())
+    // Per input, its columns, whether it is read bottom-up, and the rows
+    // read so far (none yet: an empty range at its first row).
+    let mut fed: Vec<((i32, usize), bool, Range<i32>)> = (0..plan.inputs.len())
         .map(|i| match job.graph.input_node(i) {
             Some(n) => {
-                let rect = plan.regions.rect(n);
-                ((rect.position.x(), rect.size.width()), rect.position.y())
+                let (rect, upward) = (plan.regions.rect(n), plan.regions.upward(n));
+                let first = match upward {
+                    true => rect.end().y(),
+                    false => rect.position.y(),
+                };
+                ((rect.position.x(), rect.size.width()), upward, first..first)
             }
-            None => (columns, plan.computed.position.y()),
+            None => (
+                columns,
+                false,
+                plan.computed.position.y()..plan.computed.position.y(),
+            ),
         })
         .collect();
+    for (cursor, &(_, upward, _)) in cursors.iter_mut().zip(&fed) {
+        cursor.upward = upward;
+    }
     for rows in plan.strips() {
         if interrupt::requested() {
             return Ok(false);
         }
+        // Each strip reads the rows of the span not read yet.
         let regions: Vec<Region> = fed
             .iter_mut()
-            .zip(plan.input_ends(&job.graph, rows.end))
-            .map(|((columns, from), end)| {
-                let read = *from..end.max(*from);
-                *from = read.end;
+            .zip(plan.input_spans(&job.graph, rows.end))
+            .map(|((columns, upward, done), span)| {
+                let read = match upward {
+                    true => span.start.min(done.start)..done.start,
+                    false => done.end..span.end.max(done.end),
+                };
+                *done = done.start.min(read.start)..done.end.max(read.end);
                 (*columns, read)
             })
             .collect();

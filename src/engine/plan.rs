@@ -255,18 +255,24 @@ impl FramePlan {
         self.window().size.area()
     }
 
-    /// Per input, the end of the rows decode reads of it for a strip ending
-    /// at output row `end`: the strip's rows, but behind a resize (its
-    /// region's span of them), and every row of its region with the last.
-    pub fn input_ends(&self, graph: &Graph, end: i32) -> Vec<i32> {
+    /// Per input, the rows decode has read of it once a strip ending at
+    /// output row `end` is read: the rows down to `end`, but behind a resize
+    /// or transform its region's span of them (every row of its region with
+    /// the last strip); decode reads them from the top, or from the bottom
+    /// for a zone read bottom-up (`Regions::upward`).
+    pub fn input_spans(&self, graph: &Graph, end: i32) -> Vec<std::ops::Range<i32>> {
         let last = end >= self.computed.end().y();
         let spans = (!self.regions.shared() && !last)
             .then(|| self.regions.spans(graph, self.computed.position.y()..end));
+        let top = self.computed.position.y();
         (0..self.inputs.len())
             .map(|i| match (graph.input_node(i), &spans) {
-                (Some(n), _) if last => self.regions.rect(n).end().y(),
-                (Some(n), Some(spans)) => self.regions.span(spans, n).end,
-                _ => end,
+                (Some(n), _) if last => {
+                    let rect = self.regions.rect(n);
+                    rect.position.y()..rect.end().y()
+                }
+                (Some(n), Some(spans)) => self.regions.span(spans, n).clone(),
+                _ => top..end,
             })
             .collect()
     }
@@ -627,11 +633,18 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     let strip_bytes = |rows: usize| {
         let top = computed.position.y();
         let spans = regions.spans(graph, top..top.saturating_add(rows as i32));
-        // Decode reads a zone from its top to its span's end: more than the
-        // span when a transform reads upwards (a flip holds its input whole).
+        // Decode reads a zone from its top to its span's end, or from its
+        // bottom to its span's start when it reads it bottom-up (a flip):
+        // the span, but where readers disagree or a turn near 90 degrees
+        // asks whole columns, the whole input.
         let held = |n: Option<usize>| {
             n.map_or(rows, |n| {
-                (regions.span(&spans, n).end - regions.rect(n).position.y()).max(0) as usize
+                let (span, rect) = (regions.span(&spans, n), regions.rect(n));
+                let rows = match regions.upward(n) {
+                    true => rect.end().y() - span.start,
+                    false => span.end - rect.position.y(),
+                };
+                rows.max(0) as usize
             })
         };
         let nodes = graph.peak(|n| {
@@ -649,8 +662,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         let message = format!(
             "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
              composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
-             (is a data window damaged? a flip, or a turn of 90 degrees or more, holds its \
-             whole input)",
+             (is a data window damaged? a turn near 90 or 270 degrees holds its whole \
+             input)",
             window.size.width(),
             window.size.height(),
         );

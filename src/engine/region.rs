@@ -8,6 +8,10 @@
 //! data. Per output strip, a zone's *span* is the rows requested of it for
 //! the strip's rows (grown the same way): what decode reads of an input, and
 //! what a strip holds of a node.
+//! A zone is read top-down, or bottom-up (*upward*) when its reader's
+//! request moves up as the reader's rows go down (a flip, a half turn):
+//! decode then reads its input's chunks in reverse and compose computes its
+//! nodes bottom row first, so that it holds a span, not the whole input.
 //! The rule and the memory bound: specs/architecture.md, "Regions of interest".
 
 use super::graph::{grow, intersection, union, Graph, Node};
@@ -24,6 +28,8 @@ pub struct Regions {
     /// What the graph's halos reach (`Graph::reach`), added around what a
     /// resampler requests: a node of its input's zone may read that far.
     reach: i32,
+    /// Per zone, whether it is read bottom-up.
+    upward: Vec<bool>,
 }
 
 fn find(parent: &mut [usize], mut n: usize) -> usize {
@@ -109,6 +115,7 @@ impl Regions {
             rects: vec![IntegerBounds::zero(); roots.len()],
             resamplers,
             reach: graph.reach(),
+            upward: vec![false; roots.len()],
         };
         // A zone no resampler reads (an input the graph leaves unread)
         // keeps the output's rows and columns, as every node did before.
@@ -133,7 +140,50 @@ impl Regions {
                 regions.rects[into] = union(regions.rects[into], asked);
             }
         }
+        regions.upward = regions.read_orders(graph);
         Ok(regions)
+    }
+
+    /// Per zone, whether it is read bottom-up: its readers' request moves
+    /// the other way from their own zone's order. Readers that disagree (a
+    /// zone flipped and read as it is) read it top-down, holding it whole
+    /// while the other order catches up (as every reversed read did before).
+    fn read_orders(&self, graph: &Graph) -> Vec<bool> {
+        // Per resampler, whether its request moves up as its rows go down:
+        // its first row's footprint lies below its last row's.
+        let reverses: Vec<bool> = self
+            .resamplers
+            .iter()
+            .map(|&(n, _)| {
+                let rect = self.rect(n);
+                let (top, bottom) = (rect.position.y(), rect.end().y());
+                let middle = |rows: Range<i32>| {
+                    let asked = request(graph, n, rows_of(rect, &rows));
+                    asked.position.y() as i64 + asked.end().y() as i64
+                };
+                bottom - top > 1 && middle(bottom - 1..bottom) < middle(top..top + 1)
+            })
+            .collect();
+        let mut upward = vec![false; self.rects.len()];
+        // Zones form a DAG: as many passes as zones settle every order.
+        for _ in 0..self.rects.len() {
+            let mut wanted: Vec<Option<bool>> = vec![None; self.rects.len()];
+            let mut split = vec![false; self.rects.len()];
+            for (&(n, into), &reverses) in self.resamplers.iter().zip(&reverses) {
+                let order = upward[self.zone[n]] != reverses;
+                split[into] |= wanted[into].is_some_and(|w| w != order);
+                wanted[into] = Some(order);
+            }
+            upward = (0..self.rects.len())
+                .map(|z| !split[z] && wanted[z] == Some(true))
+                .collect();
+        }
+        upward
+    }
+
+    /// Whether node `n`'s zone is read bottom-up.
+    pub fn upward(&self, n: usize) -> bool {
+        self.upward[self.zone[n]]
     }
 
     /// Whether every node shares the output's rows and columns.
@@ -191,5 +241,95 @@ pub fn request(graph: &Graph, n: usize, out: IntegerBounds) -> IntegerBounds {
     match &graph.nodes[n] {
         Node::Op { op, .. } => op.request(out).expect("a resampling node"),
         Node::Input(_) => unreachable!("inputs do not resample"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::graph::Op;
+    use crate::engine::strip::{Rows, RowsMut};
+    use exr::meta::attribute::ChannelDescription;
+
+    /// Mirrors rows about the middle of `0..height` (a flip) when `flip`,
+    /// else reads each row as it is, and either way resamples (requests).
+    struct Mirror {
+        height: i32,
+        flip: bool,
+    }
+
+    impl Op for Mirror {
+        fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
+            let (top, bottom) = match self.flip {
+                true => (self.height - out.end().y(), self.height - out.position.y()),
+                false => (out.position.y(), out.end().y()),
+            };
+            Some(rows_of(out, &(top..bottom)))
+        }
+        fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+            inputs[0].to_vec()
+        }
+        fn compute(&self, _: i64, _: &[&Rows], _: &mut RowsMut) -> Result<(), String> {
+            Ok(())
+        }
+    }
+
+    /// Adds its inputs (any op that does not resample).
+    struct Sum;
+
+    impl Op for Sum {
+        fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+            inputs[0].to_vec()
+        }
+        fn compute(&self, _: i64, _: &[&Rows], _: &mut RowsMut) -> Result<(), String> {
+            Ok(())
+        }
+    }
+
+    /// The read order of each node of a graph of `ops` (each with its
+    /// inputs) after one input.
+    fn orders(ops: Vec<(Box<dyn Op>, Vec<usize>)>) -> Vec<bool> {
+        let mut nodes = vec![Node::Input(0)];
+        for (op, inputs) in ops {
+            nodes.push(Node::Op {
+                op,
+                inputs,
+                origin: None,
+            });
+        }
+        let graph = Graph { nodes };
+        let window = IntegerBounds::new((0, 0), (8, 100));
+        let valid = vec![window; graph.nodes.len()];
+        let regions = Regions::new(&graph, window, &valid).unwrap();
+        (0..graph.nodes.len()).map(|n| regions.upward(n)).collect()
+    }
+
+    fn mirror(flip: bool) -> Box<dyn Op> {
+        Box::new(Mirror { height: 100, flip })
+    }
+
+    #[test]
+    fn a_zone_is_read_bottom_up_where_its_reader_moves_up() {
+        // A flip reads its input bottom-up; one that keeps the rows' order
+        // reads it top-down.
+        assert_eq!(orders(vec![(mirror(true), vec![0])]), [true, false]);
+        assert_eq!(orders(vec![(mirror(false), vec![0])]), [false, false]);
+        // A flip of a flip: the middle zone bottom-up, the input top-down.
+        let twice = vec![(mirror(true), vec![0]), (mirror(true), vec![1])];
+        assert_eq!(orders(twice), [false, true, false]);
+        // Read flipped and as it is at once: top-down (held whole).
+        let split = vec![
+            (mirror(true), vec![0]),
+            (mirror(false), vec![0]),
+            (Box::new(Sum) as Box<dyn Op>, vec![1, 2]),
+        ];
+        assert_eq!(orders(split), [false; 4]);
+        // Read flipped twice: bottom-up.
+        let both = vec![
+            (mirror(true), vec![0]),
+            (mirror(true), vec![0]),
+            (Box::new(Sum) as Box<dyn Op>, vec![1, 2]),
+        ];
+        assert_eq!(orders(both), [true, false, false, false]);
     }
 }

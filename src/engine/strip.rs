@@ -150,6 +150,28 @@ impl Samples {
         }
     }
 
+    /// Puts the samples of `other`, of the same type, before its own.
+    fn prepend(&mut self, other: &Samples) {
+        fn before<T: Copy>(v: &mut Vec<T>, other: &[T]) {
+            v.splice(0..0, other.iter().copied());
+        }
+        match (self, other) {
+            (Samples::F16(a), Samples::F16(b)) => before(a, b),
+            (Samples::F32(a), Samples::F32(b)) => before(a, b),
+            (Samples::U32(a), Samples::U32(b)) => before(a, b),
+            _ => panic!("prepending planes of different sample types"),
+        }
+    }
+
+    /// Forgets the samples from `len` on.
+    fn truncate(&mut self, len: usize) {
+        match self {
+            Samples::F16(v) => v.truncate(len),
+            Samples::F32(v) => v.truncate(len),
+            Samples::U32(v) => v.truncate(len),
+        }
+    }
+
     /// Forgets the first `count` samples; all of them frees the memory too
     /// (an emptied window takes over the next strip's planes as they are).
     fn drop_front(&mut self, count: usize) {
@@ -383,15 +405,28 @@ impl Rows {
     /// the same columns and channels.
     pub fn append(&mut self, below: Rows) {
         assert_eq!(below.y, self.end(), "rows must be appended in order");
-        assert_eq!(below.width, self.width);
+        self.join(below, Samples::extend);
+    }
+
+    /// Puts the rows of `above`, which must end at `self.y` and have the
+    /// same columns and channels, before its own (a zone read bottom-up).
+    pub fn prepend(&mut self, above: Rows) {
+        assert_eq!(above.end(), self.y, "rows must be prepended in order");
+        self.extent.y = above.y;
+        self.join(above, Samples::prepend);
+    }
+
+    /// Takes the rows of `other` into each plane by `add`.
+    fn join(&mut self, other: Rows, add: fn(&mut Samples, &Samples)) {
+        assert_eq!(other.width, self.width);
         if self.height == 0 {
-            self.planes = below.planes;
+            self.planes = other.planes;
         } else {
-            for (plane, other) in self.planes.iter_mut().zip(&below.planes) {
-                plane.extend(other);
+            for (plane, other) in self.planes.iter_mut().zip(&other.planes) {
+                add(plane, other);
             }
         }
-        self.extent.height += below.extent.height;
+        self.extent.height += other.extent.height;
     }
 
     /// Appends `height` rows of zeros, to be written in place (`bands`).
@@ -402,9 +437,30 @@ impl Rows {
         self.extent.height += height;
     }
 
+    /// Puts `height` rows of zeros before its own, to be written in place
+    /// (`bands_in`).
+    pub fn grow_up(&mut self, height: usize) {
+        let above = Rows::zeros(
+            self.x,
+            self.y - height as i32,
+            self.width,
+            height,
+            self.channels.clone(),
+            self.valid,
+        );
+        self.prepend(above);
+    }
+
     /// Rows `from ..` (absolute) cut into bands of `band` rows (the last
     /// one shorter), each writable on its own.
     pub fn bands(&mut self, from: i32, band: usize) -> Vec<RowsMut<'_>> {
+        let end = self.extent.end();
+        self.bands_in(from..end, band)
+    }
+
+    /// Rows `rows` (absolute) cut into bands of `band` rows, as `bands`.
+    pub fn bands_in(&mut self, rows: Range<i32>, band: usize) -> Vec<RowsMut<'_>> {
+        let from = rows.start;
         let skip = (from - self.extent.y) as usize * self.extent.width;
         let mut rest: Vec<PlaneMut> = self
             .planes
@@ -413,8 +469,8 @@ impl Rows {
             .collect();
         let mut bands = Vec::new();
         let mut y = from;
-        while y < self.extent.end() {
-            let height = band.min((self.extent.end() - y) as usize);
+        while y < rows.end {
+            let height = band.min((rows.end - y) as usize);
             let (now, later): (Vec<_>, Vec<_>) = rest
                 .into_iter()
                 .map(|p| p.split_at(height * self.extent.width))
@@ -445,6 +501,15 @@ impl Rows {
         }
         self.y += count as i32;
         self.height -= count;
+    }
+
+    /// Forgets the rows from `y` on (a zone read bottom-up).
+    pub fn drop_rows_from(&mut self, y: i32) {
+        let keep = (y.clamp(self.y, self.end()) - self.y) as usize;
+        for plane in &mut self.planes {
+            plane.truncate(keep * self.extent.width);
+        }
+        self.height = keep;
     }
 
     /// Rows `range` (absolute): moved out when they are all the rows held

@@ -79,6 +79,25 @@ fn peak_memory_does_not_grow_with_height() {
     );
 }
 
+/// A flip reads its input bottom-up: 8 times the rows hold what the short
+/// plate holds (each frame is 32 MiB of raw half RGBA for 1024 rows; held
+/// whole, the tall one's peak would pass 256 MiB).
+#[test]
+fn a_flip_peak_memory_does_not_grow_with_height() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "s", "fg", 2048, 1024, "1");
+    generate_sequence(d, "t", "fg", 2048, 8192, "1");
+    let flip = ["transform", "--flip", "--filter", "impulse"];
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let short = peak_runs(d, &flip, &["s.####.exr"], "1", 3, true);
+    let tall = peak_runs(d, &flip, &["t.####.exr"], "1", 2, false);
+    assert!(
+        tall as f64 <= short as f64 * 1.25,
+        "short {short} B, 8x taller {tall} B"
+    );
+}
+
 #[test]
 fn peak_memory_does_not_grow_with_frames() {
     let dir = tempfile::tempdir().unwrap();

@@ -123,16 +123,24 @@ fn bilinear(img: &Img, plane: &Samples, u: f64, v: f64) -> f64 {
         + fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1))
 }
 
+/// At 23 degrees the input streams top-down, at 150 (its footprint moving
+/// up as the output's rows go down) bottom-up.
 #[test]
 fn any_angle_is_bilinear_sampling_at_the_inverse_mapped_point() {
+    for angle in ["23", "150"] {
+        bilinear_at(angle);
+    }
+}
+
+fn bilinear_at(angle: &str) {
     let dir = tempfile::tempdir().unwrap();
     let (w, h) = (37, 29);
     let (input, img) = plate(dir.path(), w, h);
     let out = dir.path().join("out.exr");
-    let (theta, tx, ty, scale) = (23.0f64, 1.5, -2.25, 0.9);
+    let (theta, tx, ty, scale) = (angle.parse::<f64>().unwrap(), 1.5, -2.25, 0.9);
     let args = [
         "--rotate",
-        "23",
+        angle,
         "--translate",
         "1.5,-2.25",
         "--scale",
@@ -323,34 +331,286 @@ fn the_job_node_agrees_and_bad_values_are_refused() {
     );
 }
 
-/// A flip reads its input's last rows first: it holds the whole input, and
-/// a frame that would hold more than the strip limit is refused before
-/// anything is read or written. A flop streams.
+/// A flip reads its input bottom-up: it streams, and its peak stays far
+/// under the frame it would hold whole. A quarter turn reads a whole column
+/// of its input for each output row: it holds the input, and a frame that
+/// would hold more than the strip limit is refused before anything is read
+/// or written.
 #[test]
-fn a_flip_of_a_wide_plate_is_refused_and_a_flop_streams() {
+fn a_flip_of_a_wide_plate_streams_and_a_quarter_turn_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("wide.exr");
-    generate(&input, "proxy", (16384, 704), &[]);
+    // 16384 x 1152 half RGBA: 144 MiB of pixels.
+    generate(&input, "proxy", (16384, 1152), &[]);
     let out = dir.path().join("out.exr");
-    let flipped = run(&["transform", s(&input), "-o", s(&out), "--flip"]);
-    assert_eq!(flipped.status.code(), Some(3), "{}", stderr(&flipped));
-    let message = stderr(&flipped);
+    let turned = run(&["transform", s(&input), "-o", s(&out), "--rotate", "90"]);
+    assert_eq!(turned.status.code(), Some(3), "{}", stderr(&turned));
+    let message = stderr(&turned);
     assert!(
-        message.contains("wide.exr") && message.contains("a flip"),
+        message.contains("wide.exr") && message.contains("a turn near 90"),
         "{message}"
     );
     assert!(!out.exists());
-    let flopped = run(&[
-        "transform",
+    for flag in ["--flip", "--flop"] {
+        let done = run(&[
+            "transform",
+            s(&input),
+            "-o",
+            s(&out),
+            flag,
+            "--filter",
+            "impulse",
+            "--json",
+        ]);
+        assert!(done.status.success(), "{}", stderr(&done));
+        let summary: serde_json::Value = serde_json::from_slice(&done.stdout).unwrap();
+        let peak = summary["peak_rss_bytes"].as_u64().unwrap();
+        assert!(peak < 120 << 20, "{flag}: {peak} B");
+    }
+}
+
+/// A flip or a half turn reads its input's chunks bottom to top, whatever
+/// their layout: scanline blocks of 1, 16 and 32 lines or tiles, in any line
+/// order, a window off the display's origin, a tiled part of a multi-part
+/// file;
+/// output strips of 1 line (input blocks carried over many strips) to 64.
+#[test]
+fn flips_and_half_turns_read_any_layout_bottom_up_exactly() {
+    use exr::image::Encoding;
+    use exr::math::Vec2;
+    use exr::prelude::{Blocks, Compression};
+    let dir = tempfile::tempdir().unwrap();
+    let (input, out) = (dir.path().join("in.exr"), dir.path().join("out.exr"));
+    let mut img = random_rgba(5, -7, 13, 45, 83, Kind::Half, true);
+    img.display = (50, 100);
+    let (dw, dh) = (50, 100);
+    let encoding = |compression, blocks, line_order| Encoding {
+        compression,
+        blocks,
+        line_order,
+    };
+    let layouts = [
+        encoding(Compression::ZIP16, Blocks::ScanLines, LineOrder::Increasing),
+        encoding(Compression::PIZ, Blocks::ScanLines, LineOrder::Decreasing),
+        encoding(
+            Compression::Uncompressed,
+            Blocks::ScanLines,
+            LineOrder::Decreasing,
+        ),
+        encoding(
+            Compression::ZIP1,
+            Blocks::Tiles(Vec2(16, 16)),
+            LineOrder::Unspecified,
+        ),
+        encoding(
+            Compression::RLE,
+            Blocks::Tiles(Vec2(8, 24)),
+            LineOrder::Decreasing,
+        ),
+    ];
+    let (x0, y0, w, h) = (img.x, img.y, img.width, img.height);
+    let cases: Vec<(&str, Window, Source)> = vec![
+        (
+            "--flip",
+            (x0, dh - y0 - h as i32, w, h),
+            Box::new(move |x, y| (x, dh - 1 - y)),
+        ),
+        (
+            "--rotate=180",
+            (dw - x0 - w as i32, dh - y0 - h as i32, w, h),
+            Box::new(move |x, y| (dw - 1 - x, dh - 1 - y)),
+        ),
+    ];
+    for layout in layouts {
+        write_encoded(&input, &img, layout);
+        for (flag, window, from) in &cases {
+            let expected = moved(&img, *window, from);
+            for strip in ["1", "7", "64"] {
+                transform(
+                    &input,
+                    &out,
+                    &[
+                        flag,
+                        "--filter",
+                        "impulse",
+                        "--strip-rows",
+                        strip,
+                        "--compression",
+                        "zips",
+                    ],
+                );
+                assert_identical(&read_image(&out), &expected);
+            }
+        }
+    }
+    // The second part of a multi-part file, tiled, read bottom-up.
+    let mut other = random_rgba(6, 0, 0, 50, 100, Kind::Half, false);
+    other.display = img.display;
+    let tiled = encoding(
+        Compression::ZIP16,
+        Blocks::Tiles(Vec2(16, 16)),
+        LineOrder::Decreasing,
+    );
+    write_encoded_parts(
+        &input,
+        &[("a", "", &other, zip_scanlines()), ("b", "", &img, tiled)],
+    );
+    let (_, window, from) = &cases[0];
+    let part = format!("{}:b", s(&input));
+    transform(
+        Path::new(&part),
+        &out,
+        &["--flip", "--filter", "impulse", "--strip-rows", "7"],
+    );
+    // The other parts are carried along, as they are.
+    let parts = read_parts(&out);
+    assert_identical(&parts[0], &other);
+    assert_identical(&parts[1], &moved(&img, *window, from));
+}
+
+/// A blur (a halo of rows) behind a flip is computed bottom-up with its
+/// input: the same bytes as the blur written whole, then flipped.
+#[test]
+fn a_blur_behind_a_flip_computes_bottom_up_exactly() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (input, _) = plate(d, 60, 150);
+    let blurred = d.join("blurred.exr");
+    ok(&[
+        "blur",
         s(&input),
         "-o",
-        s(&out),
-        "--flop",
-        "--filter",
-        "impulse",
-        "--json",
+        s(&blurred),
+        "--radius",
+        "6",
+        "--quiet",
     ]);
-    assert!(flopped.status.success(), "{}", stderr(&flopped));
-    let summary: serde_json::Value = serde_json::from_slice(&flopped.stdout).unwrap();
-    assert!(summary["peak_rss_bytes"].as_u64().unwrap() < 200 << 20);
+    let apart = d.join("apart.exr");
+    transform(&blurred, &apart, &["--flip", "--filter", "impulse"]);
+    let job = d.join("job.toml");
+    let out = d.join("job.exr");
+    let text = format!(
+        "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"b\"\nop = \"blur\"\nradius = 6\ninputs = [\"in\"]\n\n[[node]]\nname = \"f\"\nop = \"transform\"\nflip = true\nfilter = \"impulse\"\ninputs = [\"b\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"f\"]\n",
+        s(&input),
+        s(&out)
+    );
+    std::fs::write(&job, text).unwrap();
+    for strip in ["1", "16"] {
+        ok(&["run", s(&job), "--quiet", "--strip-rows", strip]);
+        assert_identical(&read_image(&out), &read_image(&apart));
+    }
+}
+
+/// oiiotool 2.4's `--flip` and `--rotate180` give the same pixels, to the
+/// bit (`idiff -fail 0`), from scanline and tiled plates several strips tall.
+#[test]
+fn flips_and_half_turns_equal_oiiotool_to_the_bit() {
+    let (Some(oiiotool), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (plate, _) = plate(d, 320, 517);
+    let tiled = d.join("tiled.exr");
+    succeed(
+        std::process::Command::new(&oiiotool)
+            .arg(&plate)
+            .args(["--tile", "64", "64", "-o"])
+            .arg(&tiled),
+    );
+    for input in [&plate, &tiled] {
+        for (ours, theirs) in [("--flip", "--flip"), ("--rotate=180", "--rotate180")] {
+            let (a, b) = (d.join("ours.exr"), d.join("theirs.exr"));
+            transform(
+                input,
+                &a,
+                &[ours, "--filter", "impulse", "--strip-rows", "16"],
+            );
+            succeed(
+                std::process::Command::new(&oiiotool)
+                    .arg(input)
+                    .arg(theirs)
+                    .arg("-o")
+                    .arg(&b),
+            );
+            assert_idiff_identical(&idiff, &a, &b);
+        }
+    }
+}
+
+/// An image read in two orders at once (flipped and flopped, turned 150
+/// degrees and moved) is held by its one read, and the result is exact; two
+/// reads of the file stream each its own way.
+#[test]
+fn an_image_read_in_two_orders_gives_the_exact_result() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (input, img) = plate(d, 40, 90);
+    let (w, h) = (40i32, 90i32);
+    let window = (0, 0, 40, 90);
+    let flipped = moved(&img, window, move |x, y| (x, h - 1 - y));
+    let flopped = moved(&img, window, move |x, y| (w - 1 - x, y));
+    let job = |nodes: &str| {
+        let path = d.join("job.toml");
+        let output = d.join("job.exr");
+        let text = format!(
+            "{nodes}\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"m\"]\n",
+            s(&output)
+        );
+        std::fs::write(&path, text).unwrap();
+        let ran = run(&["run", s(&path), "--quiet", "--strip-rows", "8"]);
+        assert!(ran.status.success(), "{}", stderr(&ran));
+        read_image(&output)
+    };
+    let read = |name: &str| format!("[[node]]\nname = \"{name}\"\nread = \"{}\"\n", s(&input));
+    let turn = |name: &str, how: &str, from: &str| {
+        format!(
+            "[[node]]\nname = \"{name}\"\nop = \"transform\"\n{how} = true\nfilter = \"impulse\"\ninputs = [\"{from}\"]\n"
+        )
+    };
+    let over = |a: &str, b: &str| {
+        format!("[[node]]\nname = \"m\"\nop = \"over\"\ninputs = [\"{a}\", \"{b}\"]\n")
+    };
+    // One read, flipped and flopped: the two transforms ask opposite orders.
+    let nodes = [
+        read("in"),
+        turn("f", "flip", "in"),
+        turn("g", "flop", "in"),
+        over("f", "g"),
+    ];
+    let both = job(&nodes.concat());
+    assert_identical(&both, &reference_over(&flipped, &flopped, false));
+    // The plate over its own flip, the file read twice.
+    let twice = job(&[
+        read("in"),
+        read("in2"),
+        turn("f", "flip", "in"),
+        over("f", "in2"),
+    ]
+    .concat());
+    assert_identical(&twice, &reference_over(&flipped, &img, false));
+    // One read, turned 150 degrees (its footprint moving up) and moved half
+    // a pixel: as the over of the two made apart.
+    let apart = |args: &[&str], name: &str| {
+        let path = d.join(name);
+        transform(&input, &path, &[args, &["--filter", "triangle"]].concat());
+        read_image(&path)
+    };
+    let turned = apart(&["--rotate", "150"], "turned.exr");
+    let shifted = apart(&["--translate", "0.5,0"], "shifted.exr");
+    let node = |name: &str, knob: &str| {
+        format!(
+            "[[node]]\nname = \"{name}\"\nop = \"transform\"\n{knob}\nfilter = \"triangle\"\ninputs = [\"in\"]\n"
+        )
+    };
+    let nodes = [
+        read("in"),
+        node("f", "rotate = 150"),
+        node("g", "translate = \"0.5,0\""),
+        over("f", "g"),
+    ];
+    assert_identical(
+        &job(&nodes.concat()),
+        &reference_over(&turned, &shifted, false),
+    );
 }
