@@ -318,11 +318,12 @@ impl Op for Crop {
             }
             return Ok(());
         }
-        // A cut: output pixel (x, y) is input pixel (x + dx, y + dy), where
+        // A cut: output pixel (x, y) is input pixel (x + dx, y + dy), inside
+        // the cut's window (a consumer may compute columns beyond it) where
         // the input has data.
         let output = IntegerBounds::new((out.x, out.y), (out.width, out.height));
         let have = intersection(
-            moved(output, (dx, dy)),
+            moved(intersection(output, out.valid), (dx, dy)),
             intersection(
                 input.valid,
                 IntegerBounds::new((input.x, input.y), (input.width, input.height)),

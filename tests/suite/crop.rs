@@ -238,3 +238,44 @@ fn a_crop_of_a_blur_is_the_blurs_crop() {
         assert_identical(&read_image(&out), &expected);
     }
 }
+
+/// A cut's pixels are its region's only: a merge computing the columns
+/// right of the cut window, or a pad around it, had the source pixels
+/// beyond the region (the cut copied its input wherever it had data).
+#[test]
+fn a_cut_is_black_outside_its_region_under_a_merge_and_a_pad() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (path, img) = input(d);
+    let mut clear = random_rgba(12, 0, 0, 60, 50, Kind::Half, false);
+    clear
+        .channels
+        .values_mut()
+        .for_each(|s| *s = s.zeros_like(60 * 50));
+    let a = d.join("a.exr");
+    write_image(&a, &clear, compression("zip"), LineOrder::Increasing);
+    let cut = reference(&img, (0, 0, 20, 10), (5, 7), (20, 10));
+    let (job, out) = (d.join("job.toml"), d.join("out.exr"));
+    let node = "[[node]]\nname = \"cut\"\nop = \"crop\"\nregion = \"20x10+5+7\"\ncut = true\ninputs = [\"b\"]\n\n";
+    for (after, expected) in [
+        (
+            format!("[[node]]\nname = \"a\"\nread = \"{}\"\n\n[[node]]\nname = \"last\"\nop = \"over\"\ninputs = [\"a\", \"cut\"]\n\n", s(&a)),
+            reference_merge("over", &clear, &cut, false, 1.0, &[""]),
+        ),
+        (
+            "[[node]]\nname = \"last\"\nop = \"pad\"\nby = 3\ninputs = [\"cut\"]\n\n".into(),
+            reference(&cut, (-3, -3, 26, 16), (0, 0), (20, 10)),
+        ),
+    ] {
+        let text = format!(
+            "[[node]]\nname = \"b\"\nread = \"{}\"\n\n{node}{after}\
+             [[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"last\"]\n",
+            s(&path),
+            s(&out)
+        );
+        std::fs::write(&job, text).unwrap();
+        let ran = run(&["run", s(&job), "--quiet"]);
+        assert!(ran.status.success(), "{}", stderr(&ran));
+        assert_identical(&read_image(&out), &expected);
+    }
+}
