@@ -479,6 +479,41 @@ fn a_result_outside_openexrs_coordinates_is_refused_naming_the_input() {
         "-q",
     ]);
     assert_eq!(read_image(&output).y, 536_870_500);
+    // At the writer's limit (its end, past the last pixel, below 2^30 - 1):
+    // refused when planned naming the window moved, not clipped, emptied,
+    // or failed by the writer.
+    let img = random_rgba(3, 1_073_741_800, 0, 20, 10, Kind::Half, false);
+    write_image(
+        &input,
+        &img,
+        compression("zip"),
+        exr::meta::attribute::LineOrder::Increasing,
+    );
+    std::fs::remove_file(&output).unwrap();
+    for shift in [3, 10, 24] {
+        let translate = format!("{shift},0");
+        let args = ["transform", s(&input), "--translate", &translate];
+        let out = run(&[&args[..], &["-o", s(&output)]].concat());
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(3), "{message}");
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        let (x0, x1) = (1_073_741_800 + shift, 1_073_741_819 + shift);
+        assert!(
+            message.contains(&format!("({x0} 0) - ({x1} 9) would not fit")),
+            "{message}"
+        );
+        assert!(!output.exists());
+    }
+    ok(&[
+        "transform",
+        s(&input),
+        "--translate",
+        "2,0",
+        "-o",
+        s(&output),
+        "-q",
+    ]);
+    assert_eq!(read_image(&output).x, 1_073_741_802);
 }
 
 /// A resize read by a consumer whose columns start left of its own (an
