@@ -572,6 +572,10 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         );
         return Err(too_big(message));
     }
+    let size = (window.size.width(), window.size.height());
+    if let Some(message) = job.media.as_ref().and_then(|r| r.media.too_large(size)) {
+        return Err(too_big(message));
+    }
     // Tiles asked of a size whose blocks the reader would refuse.
     if let BlockDescription::Tiles(tiles) = header.blocks {
         let tile_bytes = tiles
