@@ -40,6 +40,7 @@ pub struct Composer<'g> {
     rects: Vec<IntegerBounds>,
     /// Per node: whether it is computed bottom-up.
     upward: Vec<bool>,
+    regions: Regions,
 }
 
 impl<'g> Composer<'g> {
@@ -90,6 +91,7 @@ impl<'g> Composer<'g> {
             window,
             rects,
             upward,
+            regions: regions.clone(),
         }
     }
 
@@ -176,6 +178,14 @@ impl<'g> Composer<'g> {
     ) -> Result<Option<Rows>, String> {
         let mut strips: Vec<Option<Rows>> = strips.into_iter().map(Some).collect();
         self.fed = rows.end;
+        // A resampler whose input is read whole could compute every row
+        // left at once (an enlarging resize of a short input): it computes
+        // what the rows fed so far ask of it, band by band.
+        let top = self.window.position.y();
+        let spans = match self.regions.shared() {
+            true => Vec::new(),
+            false => self.regions.spans(self.graph, top..rows.end),
+        };
         for n in 0..self.graph.nodes.len() {
             let graph_node = &self.graph.nodes[n];
             match graph_node {
@@ -188,7 +198,10 @@ impl<'g> Composer<'g> {
                 }
                 Node::Op { op, inputs, .. } => {
                     let start = self.frontier(n);
-                    let end = self.computable(n, op.as_ref(), inputs, start);
+                    let mut end = self.computable(n, op.as_ref(), inputs, start);
+                    if !self.upward[n] && op.request(self.rects[n]).is_some() {
+                        end = end.min(self.regions.needed_end(&spans, n));
+                    }
                     let rows = match self.upward[n] {
                         true => end..start,
                         false => start..end,
@@ -568,6 +581,13 @@ mod tests {
                 Samples::F32(image[fed as usize * width..read_to as usize * width].to_vec());
             fed = read_to;
             if let Some(done) = composer.push(0, y..end, vec![rows]).unwrap() {
+                // About a strip's rows (a request's rounding may hold one
+                // back), never all those left once the input is read.
+                assert!(
+                    done.height <= strip + 2,
+                    "{} rows for a strip of {strip}",
+                    done.height
+                );
                 let mut v = vec![0.0; done.height * done.width];
                 done.planes[0].read_f32(0..v.len(), &mut v);
                 out.extend(v);
@@ -628,6 +648,12 @@ mod tests {
                 }
             }
         }
+        // Enlarged from an input read whole by the first strip.
+        let tiny: Vec<f32> = (0..8).map(|i| i as f32).collect();
+        let op = Rescale { num: 100, den: 1 };
+        let (expected, _) = rescaled(&tiny, (4, 2), &op);
+        let (got, _, _) = stream_regions(&tiny, (4, 2), vec![Box::new(op)], 3);
+        assert_eq!(got, expected);
         // Down, then up again: two regions behind the output's.
         let (half, size) = rescaled(&image, (width, height), &Rescale { num: 1, den: 2 });
         let (expected, _) = rescaled(&half, size, &Rescale { num: 3, den: 1 });

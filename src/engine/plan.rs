@@ -421,8 +421,9 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
         ));
     }
-    // OpenEXR's coordinates (ImfHeader.cpp's sanity check, the exr crate's):
-    // an input far out, resized, can leave them.
+    // OpenEXR's coordinates (ImfHeader.cpp's sanity check; the exr crate's,
+    // which the writer applies, holds the end past the last pixel below the
+    // limit): an input far out, resized or moved, can leave them.
     let limit = i64::from(i32::MAX / 2);
     let (x0, y0) = (
         i64::from(window.position.x()),
@@ -432,10 +433,12 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         x0 + window.size.width() as i64 - 1,
         y0 + window.size.height() as i64 - 1,
     );
-    if [x0, y0].iter().any(|&v| v <= -limit) || [x1, y1].iter().any(|&v| v >= limit) {
+    if [x0, y0].iter().any(|&v| v <= -limit) || [x1, y1].iter().any(|&v| v + 1 >= limit) {
         return Err(located(format!(
             "the result's data window ({x0} {y0}) - ({x1} {y1}) would not fit OpenEXR's 32-bit \
-             coordinates (between -{limit} and {limit}, excluded)"
+             coordinates (pixels from {} to {})",
+            1 - limit,
+            limit - 2
         )));
     }
 
@@ -575,6 +578,10 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
              {block_bytes} bytes, over the {MAX_BLOCK_BYTES}-byte limit",
             window.size.width()
         );
+        return Err(too_big(message));
+    }
+    let size = (window.size.width(), window.size.height());
+    if let Some(message) = job.media.as_ref().and_then(|r| r.media.too_large(size)) {
         return Err(too_big(message));
     }
     // Tiles asked of a size whose blocks the reader would refuse.

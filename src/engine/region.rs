@@ -18,6 +18,7 @@ use super::graph::{grow, intersection, union, Graph, Node};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
 
+#[derive(Clone)]
 pub struct Regions {
     /// Per node, its zone.
     zone: Vec<usize>,
@@ -228,6 +229,13 @@ impl Regions {
             .enumerate()
             .map(|(z, s)| s.unwrap_or(self.rects[z].position.y()..self.rects[z].position.y()))
             .collect()
+    }
+
+    /// The rows past which node `n` need not compute for output rows
+    /// `rows`: its zone's span, grown by what the halos reach (a node of
+    /// the output's zone feeds halos too).
+    pub fn needed_end(&self, spans: &[Range<i32>], n: usize) -> i32 {
+        self.span(spans, n).end.saturating_add(self.reach)
     }
 
     /// Node `n`'s zone's span among `spans`.

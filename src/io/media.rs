@@ -119,6 +119,15 @@ impl Media {
         }
     }
 
+    /// Why a frame of `width` x `height` pixels cannot be written, if it
+    /// cannot: JPEG's sizes are 16-bit.
+    pub fn too_large(&self, (width, height): (usize, usize)) -> Option<String> {
+        let limit = u16::MAX as usize;
+        (self.format == Format::Jpeg && width.max(height) > limit).then(|| {
+            format!("the result is {width}x{height} pixels, larger than JPEG's {limit} a side")
+        })
+    }
+
     /// Whether frames keep an alpha channel: PNG and TIFF do when the image
     /// has one; JPEG has none and is written as the image over black (its
     /// premultiplied colour, as oiiotool writes it).

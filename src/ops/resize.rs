@@ -465,6 +465,10 @@ impl Pass {
         let geometry = self.geometry();
         let mut weights = Vec::new();
         let mut sums = vec![0.0f32; columns.len()];
+        // The output's columns in the first pass's rows, which have their
+        // own region (it may start right or left of the output's).
+        let left = (out.x + columns.start as i32 - across.x) as usize;
+        let columns_in = left..left + columns.len();
         for y in out.valid_rows() {
             let first = geometry.taps(self.filter, y, &mut weights);
             let range = out.row_range(y);
@@ -476,7 +480,7 @@ impl Pass {
                 for (i, &w) in weights.iter().enumerate() {
                     let from = (first + i as i32).clamp(rows.start, rows.end - 1);
                     let line = across.row_range(from).start;
-                    let line = &source[line + columns.start..line + columns.end];
+                    let line = &source[line + columns_in.start..line + columns_in.end];
                     for (sum, v) in sums.iter_mut().zip(line) {
                         *sum += w * v;
                     }

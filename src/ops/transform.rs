@@ -271,9 +271,15 @@ fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
     };
     let (x0, y0) = ((snap(x0) - by).floor(), (snap(y0) - by).floor());
     let (x1, y1) = ((snap(x1) + by).ceil(), (snap(y1) + by).ceil());
-    let limit = (1i64 << 30) as f64;
+    // Beyond OpenEXR's ±(2^30 - 1), so that planning refuses a window past
+    // them as it is (not clipped, or emptied); corners and sides short of
+    // i32's.
+    let limit = ((1i64 << 31) - (1 << 24)) as f64;
     let (x0, y0) = (x0.clamp(-limit, limit), y0.clamp(-limit, limit));
-    let (x1, y1) = (x1.clamp(x0, limit), y1.clamp(y0, limit));
+    let (x1, y1) = (
+        x1.clamp(x0, limit.min(x0 + limit)),
+        y1.clamp(y0, limit.min(y0 + limit)),
+    );
     IntegerBounds::new(
         (x0 as i32, y0 as i32),
         ((x1 - x0) as usize, (y1 - y0) as usize),

@@ -158,6 +158,18 @@ fn crop_and_pad_job_nodes_and_bad_regions() {
     }
 }
 
+/// A transparent element, 60x50 at the origin, written to `a.exr`.
+fn clear_element(dir: &Path) -> (std::path::PathBuf, Img) {
+    let mut clear = random_rgba(12, 0, 0, 60, 50, Kind::Half, false);
+    clear
+        .channels
+        .values_mut()
+        .for_each(|s| *s = s.zeros_like(60 * 50));
+    let a = dir.join("a.exr");
+    write_image(&a, &clear, compression("zip"), LineOrder::Increasing);
+    (a, clear)
+}
+
 #[test]
 fn a_crop_under_a_merge_is_black_outside_its_window() {
     let dir = tempfile::tempdir().unwrap();
@@ -165,13 +177,7 @@ fn a_crop_under_a_merge_is_black_outside_its_window() {
     let (path, img) = input(d);
     // A transparent element wider and taller than the crop: the merge's
     // window is the element's, the crop's pixels only inside its region.
-    let mut clear = random_rgba(12, 0, 0, 60, 50, Kind::Half, false);
-    clear
-        .channels
-        .values_mut()
-        .for_each(|s| *s = s.zeros_like(60 * 50));
-    let a = d.join("a.exr");
-    write_image(&a, &clear, compression("zip"), LineOrder::Increasing);
+    let (a, clear) = clear_element(d);
     let job = d.join("job.toml");
     let text = format!(
         "[[node]]\nname = \"a\"\nread = \"{}\"\n\n[[node]]\nname = \"b\"\nread = \"{}\"\n\n\
@@ -235,6 +241,41 @@ fn a_crop_of_a_blur_is_the_blurs_crop() {
                 (w as usize, h as usize),
             ),
         };
+        assert_identical(&read_image(&out), &expected);
+    }
+}
+
+/// A cut's pixels are its region's only: a merge computing the columns
+/// right of the cut window, or a pad around it, had the source pixels
+/// beyond the region (the cut copied its input wherever it had data).
+#[test]
+fn a_cut_is_black_outside_its_region_under_a_merge_and_a_pad() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (path, img) = input(d);
+    let (a, clear) = clear_element(d);
+    let cut = reference(&img, (0, 0, 20, 10), (5, 7), (20, 10));
+    let (job, out) = (d.join("job.toml"), d.join("out.exr"));
+    let node = "[[node]]\nname = \"cut\"\nop = \"crop\"\nregion = \"20x10+5+7\"\ncut = true\ninputs = [\"b\"]\n\n";
+    for (after, expected) in [
+        (
+            format!("[[node]]\nname = \"a\"\nread = \"{}\"\n\n[[node]]\nname = \"last\"\nop = \"over\"\ninputs = [\"a\", \"cut\"]\n\n", s(&a)),
+            reference_merge("over", &clear, &cut, false, 1.0, &[""]),
+        ),
+        (
+            "[[node]]\nname = \"last\"\nop = \"pad\"\nby = 3\ninputs = [\"cut\"]\n\n".into(),
+            reference(&cut, (-3, -3, 26, 16), (0, 0), (20, 10)),
+        ),
+    ] {
+        let text = format!(
+            "[[node]]\nname = \"b\"\nread = \"{}\"\n\n{node}{after}\
+             [[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"last\"]\n",
+            s(&path),
+            s(&out)
+        );
+        std::fs::write(&job, text).unwrap();
+        let ran = run(&["run", s(&job), "--quiet"]);
+        assert!(ran.status.success(), "{}", stderr(&ran));
         assert_identical(&read_image(&out), &expected);
     }
 }

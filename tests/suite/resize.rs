@@ -479,4 +479,97 @@ fn a_result_outside_openexrs_coordinates_is_refused_naming_the_input() {
         "-q",
     ]);
     assert_eq!(read_image(&output).y, 536_870_500);
+    // At the writer's limit (its end, past the last pixel, below 2^30 - 1):
+    // refused when planned naming the window moved, not clipped, emptied,
+    // or failed by the writer.
+    let img = random_rgba(3, 1_073_741_800, 0, 20, 10, Kind::Half, false);
+    write_image(
+        &input,
+        &img,
+        compression("zip"),
+        exr::meta::attribute::LineOrder::Increasing,
+    );
+    std::fs::remove_file(&output).unwrap();
+    for shift in [3, 10, 24] {
+        let translate = format!("{shift},0");
+        let args = ["transform", s(&input), "--translate", &translate];
+        let out = run(&[&args[..], &["-o", s(&output)]].concat());
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(3), "{message}");
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        let (x0, x1) = (1_073_741_800 + shift, 1_073_741_819 + shift);
+        assert!(
+            message.contains(&format!("({x0} 0) - ({x1} 9) would not fit")),
+            "{message}"
+        );
+        assert!(!output.exists());
+    }
+    ok(&[
+        "transform",
+        s(&input),
+        "--translate",
+        "2,0",
+        "-o",
+        s(&output),
+        "-q",
+    ]);
+    assert_eq!(read_image(&output).x, 1_073_741_802);
+}
+
+/// A resize read by a consumer whose columns start left of its own (an
+/// over onto a plate with a negative origin, a pad, a crop reaching left)
+/// is the resized file's result read by the same op: the vertical pass had
+/// indexed the first pass's rows with the output's column offsets (a
+/// panic, or columns shifted).
+#[test]
+fn a_resize_under_wider_columns_is_the_resized_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let write = |name: &str, img: &Img| {
+        let path = d.join(name);
+        write_image(
+            &path,
+            img,
+            compression("zip"),
+            exr::meta::attribute::LineOrder::Increasing,
+        );
+        path
+    };
+    let input = write("in.exr", &random_rgba(4, 0, 0, 64, 48, Kind::Half, false));
+    let plate = write(
+        "plate.exr",
+        &random_rgba(5, -5, -7, 40, 30, Kind::Half, false),
+    );
+    let small = d.join("small.exr");
+    resize(&input, &small, &["--scale", "0.5", "--filter", "triangle"]);
+    let (job, out, separate) = (d.join("job.toml"), d.join("out.exr"), d.join("sep.exr"));
+    let over = format!("op = \"over\"\ninputs = [\"small\", \"plate\"]\n\n[[node]]\nname = \"plate\"\nread = \"{}\"", s(&plate));
+    for keys in [
+        over.as_str(),
+        "op = \"pad\"\nby = 8\ninputs = [\"small\"]",
+        "op = \"crop\"\nregion = \"80x48-10+0\"\ninputs = [\"small\"]",
+    ] {
+        let text = |read: &Path, resized: &str, output: &Path| {
+            format!(
+                "[[node]]\nname = \"in\"\nread = \"{}\"\n\n{resized}[[node]]\nname = \"op\"\n{keys}\n\n\
+                 [[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"op\"]\n",
+                s(read),
+                s(output)
+            )
+        };
+        let resized = "[[node]]\nname = \"small\"\nop = \"resize\"\nscale = 0.5\nfilter = \"triangle\"\ninputs = [\"in\"]\n\n";
+        for (read, resized, output) in [
+            (&input, resized, &out),
+            (
+                &small,
+                "[[node]]\nname = \"small\"\nop = \"pad\"\nby = 0\ninputs = [\"in\"]\n\n",
+                &separate,
+            ),
+        ] {
+            std::fs::write(&job, text(read, resized, output)).unwrap();
+            let ran = run(&["run", s(&job), "--quiet"]);
+            assert!(ran.status.success(), "{keys}: {}", stderr(&ran));
+        }
+        assert_identical(&read_image(&out), &read_image(&separate));
+    }
 }

@@ -501,3 +501,22 @@ fn a_job_files_write_node_takes_the_review_options() {
     .unwrap();
     refused(&["run", s(&job)], "job.toml");
 }
+
+/// A JPEG result over 65535 pixels a side (JPEG's limit) is refused when
+/// the frame is planned, naming the input, the frame and the limit, with
+/// nothing written: it had failed in the writer (exit 4) naming no frame.
+#[test]
+fn a_jpeg_past_65535_pixels_a_side_is_refused_when_planned() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("wide.exr");
+    crate::common::generate(&input, "bg", (65536, 2), &[]);
+    let output = dir.path().join("wide.jpg");
+    let out = run(&["transcode", s(&input), "-o", s(&output)]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert_eq!(message.trim().lines().count(), 1, "{message}");
+    for says in ["frame 1", "wide.exr", "65536x2", "65535"] {
+        assert!(message.contains(says), "{says}: {message}");
+    }
+    assert!(!output.exists());
+}
