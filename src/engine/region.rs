@@ -10,7 +10,7 @@
 //! what a strip holds of a node.
 //! The rule and the memory bound: specs/architecture.md, "Regions of interest".
 
-use super::graph::{grow, intersection, union, Graph, Node};
+use super::graph::{grow, intersection, union, Graph, Node, Reach};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
 
@@ -23,7 +23,7 @@ pub struct Regions {
     resamplers: Vec<(usize, usize)>,
     /// What the graph's halos reach (`Graph::reach`), added around what a
     /// resampler requests: a node of its input's zone may read that far.
-    reach: i32,
+    reach: Reach,
 }
 
 fn find(parent: &mut [usize], mut n: usize) -> usize {
