@@ -291,7 +291,14 @@ pub(crate) fn input_job(
     }
     let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
-    let luminance = luminance_inputs(&inputs, &parts, layers, &graph, &resolved.frames);
+    let luminance = luminance_inputs(
+        &inputs,
+        &parts,
+        layers,
+        run.all_parts,
+        &graph,
+        &resolved.frames,
+    );
     let graph = luminance_chroma::colour_inputs(graph, &luminance);
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
@@ -346,12 +353,15 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
 }
 
 /// Per input, the luminance weights of its first frame when the job has
-/// operations and that frame is luminance/chroma or luminance only: the
-/// operations read it as RGB. A frame that cannot be read is left to the run.
+/// operations and that frame is luminance/chroma or luminance only (with
+/// `--all-parts`, any part of it: the conversion passes RGB parts as they
+/// are): the operations read it as RGB. A frame that cannot be read is left
+/// to the run.
 fn luminance_inputs(
     inputs: &[FramePattern],
     parts: &[Option<String>],
     layers: &LayerArgs,
+    all_parts: bool,
     graph: &Graph,
     frames: &[FrameSources],
 ) -> Vec<Option<[f32; 3]>> {
@@ -365,13 +375,19 @@ fn luminance_inputs(
                 Source::Black(_) => None,
             })?;
             let file = ExrFile::open(&inputs[i].path(frame), None).ok()?;
-            let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref()).ok()?;
-            let header = file.header(part);
-            luminance_chroma::is_luminance(header).then(|| {
-                luminance_chroma::luminance_weights(
-                    header.shared_attributes.chromaticities.as_ref(),
-                )
-            })
+            let read = match all_parts {
+                true => 0..file.meta.headers.len(),
+                false => {
+                    let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref());
+                    part.ok().map(|p| p..p + 1)?
+                }
+            };
+            let header = read
+                .map(|part| file.header(part))
+                .find(|header| luminance_chroma::is_luminance(header))?;
+            Some(luminance_chroma::luminance_weights(
+                header.shared_attributes.chromaticities.as_ref(),
+            ))
         })
         .collect()
 }

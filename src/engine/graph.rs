@@ -21,6 +21,13 @@ pub trait Op: Send + Sync {
         self.halo()
     }
 
+    /// Whether the op reads luminance/chroma and luminance-only channels as
+    /// such (the conversion to RGB): every other op reads them as whatever
+    /// channels they are, so such an input must reach it converted.
+    fn reads_luminance(&self) -> bool {
+        false
+    }
+
     /// For an op that resamples (resize, transform): the region of its
     /// inputs it reads to compute region `out` of its own (Nuke's
     /// `_request`), unclipped. Its inputs then stream in rows and columns of
@@ -238,6 +245,18 @@ impl Graph {
         self.nodes
             .iter()
             .position(|n| matches!(n, Node::Input(j) if *j == i))
+    }
+
+    /// Whether an operation not converting luminance (`Op::reads_luminance`)
+    /// reads input `i` as it is.
+    pub fn reads_unconverted(&self, i: usize) -> bool {
+        let Some(n) = self.input_node(i) else {
+            return false;
+        };
+        self.nodes.iter().any(|node| {
+            matches!(node, Node::Op { op, inputs, .. }
+                if inputs.contains(&n) && !op.reads_luminance())
+        })
     }
 
     /// The most that nodes hold at once as compose sweeps them in order,
