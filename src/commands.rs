@@ -20,6 +20,7 @@ use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
 use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, FramePattern};
+use crate::io::text::Utf8Text;
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
@@ -721,25 +722,35 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
         let mut reads = Vec::new();
         for (i, (input, &source)) in job.inputs.iter().zip(&sources.inputs).enumerate() {
             let wanted = job.times[i].read(frame).unwrap_or(source.file_frame());
-            let file = input.path(source.file_frame()).display().to_string();
+            let path = input.path(source.file_frame());
+            let file = path.display().to_string();
             let missing = input.path(wanted).display().to_string();
+            let part = part_read(job, i, &path);
             reads.push(match source {
-                Source::Frame(f) if f == wanted => (file, "frame", None),
-                Source::Frame(_) => (file, "held", Some(missing)),
-                Source::Black(_) => (file, "black", Some(missing)),
+                Source::Frame(f) if f == wanted => (file, part, "frame", None),
+                Source::Frame(_) => (file, part, "held", Some(missing)),
+                Source::Black(_) => (file, None, "black", Some(missing)),
             });
             for merged in &job.merged[i] {
-                reads.push((merged.path(frame).display().to_string(), "frame", None));
+                reads.push((
+                    merged.path(frame).display().to_string(),
+                    None,
+                    "frame",
+                    None,
+                ));
             }
         }
         let output = job.output.path(frame).display().to_string();
         let line = match json {
             true => serde_json::json!({
                 "frame": frame,
-                "reads": reads.iter().map(|(file, source, missing)| {
+                "reads": reads.iter().map(|(file, part, source, missing)| {
                     let mut read = serde_json::json!({"file": file, "source": source});
                     if let Some(missing) = missing {
                         read["missing"] = missing.as_str().into();
+                    }
+                    if let Some(part) = part {
+                        read["part"] = part.as_str().into();
                     }
                     read
                 }).collect::<Vec<_>>(),
@@ -749,10 +760,18 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
             false => {
                 let reads: Vec<String> = reads
                     .iter()
-                    .map(|(file, source, missing)| match (source, missing) {
-                        (&"held", Some(missing)) => format!("{file} (held: {missing} is missing)"),
-                        (&"black", Some(missing)) => format!("black ({missing} is missing)"),
-                        _ => file.clone(),
+                    .map(|(file, part, source, missing)| {
+                        let file = match part {
+                            Some(part) => format!("{file} ({part})"),
+                            None => file.clone(),
+                        };
+                        match (source, missing) {
+                            (&"held", Some(missing)) => {
+                                format!("{file} (held: {missing} is missing)")
+                            }
+                            (&"black", Some(missing)) => format!("black ({missing} is missing)"),
+                            _ => file,
+                        }
                     })
                     .collect();
                 let label = job
@@ -765,6 +784,21 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
         text.push('\n');
     }
     text
+}
+
+/// The part of input `i`'s file `path` that its part or the view picks,
+/// named for the dry run's listing: none without a choice, or when the file
+/// cannot be read (the run says why).
+fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
+    if job.view.is_none() && job.parts[i].is_none() {
+        return None;
+    }
+    let file = ExrFile::open(path, None).ok()?;
+    let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
+    Some(match &file.header(part).own_attributes.layer_name {
+        Some(name) => format!("part {part} '{}'", name.utf8()),
+        None => format!("part {part}"),
+    })
 }
 
 pub(crate) fn run_with_progress(
