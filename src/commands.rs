@@ -2,13 +2,15 @@
 
 use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
 use crate::engine::graph::NodeId;
-use crate::engine::graph::{Graph, GraphBuilder, Node};
+use crate::engine::graph::{Graph, GraphBuilder, Node, Op};
 use crate::engine::interrupt;
 use crate::engine::luminance_chroma;
 use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
-use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Review, Source};
+use crate::engine::plan::{
+    plan_parts, FramePlan, FrameSources, HeaderBase, Job, OutputBlocks, Review, Source,
+};
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
@@ -28,6 +30,7 @@ use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{count, Report, Summary};
 use crate::slate::{Slate, SlateFrame};
+use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -415,7 +418,34 @@ pub(crate) fn plate_job(
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
     let slate = slate_frame(run, &output, &frames, &frames)?;
+    let compression = parse_compression(run)?.unwrap_or(Compression::ZIP16);
     Ok(Job {
+        blocks: run.blocks(),
+        strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
+        resume: run.resume,
+        keep_going: run.keep_going,
+        rows: run.rows,
+        attributes,
+        media,
+        slate,
+        ..sourced_job(plate, display, output, frames, compression)
+    })
+}
+
+/// A job of no inputs: `source` (an op of none) over `display` for
+/// `frames`, into `output` (a generated plate, a slate), written as a run
+/// without options writes until the caller says otherwise.
+fn sourced_job(
+    source: impl Op + 'static,
+    display: IntegerBounds,
+    output: FramePattern,
+    frames: Vec<i64>,
+    compression: Compression,
+) -> Job {
+    let mut graph = GraphBuilder::default();
+    graph.add(source, &[]);
+    Job {
         inputs: Vec::new(),
         times: Vec::new(),
         merged: Vec::new(),
@@ -430,24 +460,20 @@ pub(crate) fn plate_job(
                 inputs: Vec::new(),
             })
             .collect(),
-        graph: {
-            let mut graph = GraphBuilder::default();
-            graph.add(plate, &[]);
-            graph.finish()
-        },
-        compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
+        graph: graph.finish(),
+        compression: Some(compression),
         header_base: HeaderBase::New(display),
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
+        blocks: OutputBlocks::FollowInput,
+        strip_rows: None,
+        zip_level: crate::io::zip::DEFAULT_LEVEL,
+        resume: false,
+        keep_going: false,
+        rows: None,
         all_parts: false,
-        attributes,
-        media,
-        slate,
-    })
+        attributes: Edits::default(),
+        media: None,
+        slate: None,
+    }
 }
 
 /// The slate `run` writes, if it asks for one and starts at the shot's first
@@ -484,36 +510,20 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
     let lines = crate::slate::lines(job, slate, header);
-    let mut graph = GraphBuilder::default();
-    graph.add(Slate::new(display, &lines), &[]);
+    let source = Slate::new(display, &lines);
+    let (output, frames) = (job.output.clone(), vec![slate.frame]);
     Ok(Some(Job {
-        inputs: Vec::new(),
-        times: Vec::new(),
-        merged: Vec::new(),
-        parts: Vec::new(),
-        view: None,
-        level: None,
-        output: job.output.clone(),
-        frames: vec![FrameSources {
-            frame: slate.frame,
-            inputs: Vec::new(),
-        }],
-        graph: graph.finish(),
-        compression: Some(header.compression),
-        header_base: HeaderBase::New(display),
         blocks: job.blocks,
         strip_rows: job.strip_rows,
         zip_level: job.zip_level,
         resume: job.resume,
-        keep_going: false,
         rows: job.rows,
-        all_parts: false,
         attributes: job.attributes.clone(),
         media: job.media.clone().map(|review| Review {
             burn_in: None,
             ..review
         }),
-        slate: None,
+        ..sourced_job(source, display, output, frames, header.compression)
     }))
 }
 
