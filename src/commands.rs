@@ -2,13 +2,15 @@
 
 use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
 use crate::engine::graph::NodeId;
-use crate::engine::graph::{Graph, GraphBuilder, Node};
+use crate::engine::graph::{Graph, GraphBuilder, Node, Op};
 use crate::engine::interrupt;
 use crate::engine::luminance_chroma;
 use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
-use crate::engine::plan::{plan_parts, FramePlan, FrameSources, HeaderBase, Job, Review, Source};
+use crate::engine::plan::{
+    plan_parts, FramePlan, FrameSources, HeaderBase, Job, OutputBlocks, Review, Source,
+};
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
 use crate::farm;
@@ -20,6 +22,7 @@ use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
 use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, FramePattern};
+use crate::io::text::Utf8Text;
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
@@ -27,6 +30,7 @@ use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{count, Report, Summary};
 use crate::slate::{Slate, SlateFrame};
+use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -291,7 +295,14 @@ pub(crate) fn input_job(
     }
     let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
-    let luminance = luminance_inputs(&inputs, &parts, layers, &graph, &resolved.frames);
+    let luminance = luminance_inputs(
+        &inputs,
+        &parts,
+        layers,
+        run.all_parts,
+        &graph,
+        &resolved.frames,
+    );
     let graph = luminance_chroma::colour_inputs(graph, &luminance);
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
@@ -346,12 +357,15 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
 }
 
 /// Per input, the luminance weights of its first frame when the job has
-/// operations and that frame is luminance/chroma or luminance only: the
-/// operations read it as RGB. A frame that cannot be read is left to the run.
+/// operations and that frame is luminance/chroma or luminance only (with
+/// `--all-parts`, any part of it: the conversion passes RGB parts as they
+/// are): the operations read it as RGB. A frame that cannot be read is left
+/// to the run.
 fn luminance_inputs(
     inputs: &[FramePattern],
     parts: &[Option<String>],
     layers: &LayerArgs,
+    all_parts: bool,
     graph: &Graph,
     frames: &[FrameSources],
 ) -> Vec<Option<[f32; 3]>> {
@@ -365,13 +379,19 @@ fn luminance_inputs(
                 Source::Black(_) => None,
             })?;
             let file = ExrFile::open(&inputs[i].path(frame), None).ok()?;
-            let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref()).ok()?;
-            let header = file.header(part);
-            luminance_chroma::is_luminance(header).then(|| {
-                luminance_chroma::luminance_weights(
-                    header.shared_attributes.chromaticities.as_ref(),
-                )
-            })
+            let read = match all_parts {
+                true => 0..file.meta.headers.len(),
+                false => {
+                    let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref());
+                    part.ok().map(|p| p..p + 1)?
+                }
+            };
+            let header = read
+                .map(|part| file.header(part))
+                .find(|header| luminance_chroma::is_luminance(header))?;
+            Some(luminance_chroma::luminance_weights(
+                header.shared_attributes.chromaticities.as_ref(),
+            ))
         })
         .collect()
 }
@@ -398,7 +418,34 @@ pub(crate) fn plate_job(
     let mut attributes = edits(run)?;
     attributes.anchor(frames[0]);
     let slate = slate_frame(run, &output, &frames, &frames)?;
+    let compression = parse_compression(run)?.unwrap_or(Compression::ZIP16);
     Ok(Job {
+        blocks: run.blocks(),
+        strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
+        resume: run.resume,
+        keep_going: run.keep_going,
+        rows: run.rows,
+        attributes,
+        media,
+        slate,
+        ..sourced_job(plate, display, output, frames, compression)
+    })
+}
+
+/// A job of no inputs: `source` (an op of none) over `display` for
+/// `frames`, into `output` (a generated plate, a slate), written as a run
+/// without options writes until the caller says otherwise.
+fn sourced_job(
+    source: impl Op + 'static,
+    display: IntegerBounds,
+    output: FramePattern,
+    frames: Vec<i64>,
+    compression: Compression,
+) -> Job {
+    let mut graph = GraphBuilder::default();
+    graph.add(source, &[]);
+    Job {
         inputs: Vec::new(),
         times: Vec::new(),
         merged: Vec::new(),
@@ -413,24 +460,20 @@ pub(crate) fn plate_job(
                 inputs: Vec::new(),
             })
             .collect(),
-        graph: {
-            let mut graph = GraphBuilder::default();
-            graph.add(plate, &[]);
-            graph.finish()
-        },
-        compression: Some(parse_compression(run)?.unwrap_or(Compression::ZIP16)),
+        graph: graph.finish(),
+        compression: Some(compression),
         header_base: HeaderBase::New(display),
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
+        blocks: OutputBlocks::FollowInput,
+        strip_rows: None,
+        zip_level: crate::io::zip::DEFAULT_LEVEL,
+        resume: false,
+        keep_going: false,
+        rows: None,
         all_parts: false,
-        attributes,
-        media,
-        slate,
-    })
+        attributes: Edits::default(),
+        media: None,
+        slate: None,
+    }
 }
 
 /// The slate `run` writes, if it asks for one and starts at the shot's first
@@ -467,36 +510,20 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
     let lines = crate::slate::lines(job, slate, header);
-    let mut graph = GraphBuilder::default();
-    graph.add(Slate::new(display, &lines), &[]);
+    let source = Slate::new(display, &lines);
+    let (output, frames) = (job.output.clone(), vec![slate.frame]);
     Ok(Some(Job {
-        inputs: Vec::new(),
-        times: Vec::new(),
-        merged: Vec::new(),
-        parts: Vec::new(),
-        view: None,
-        level: None,
-        output: job.output.clone(),
-        frames: vec![FrameSources {
-            frame: slate.frame,
-            inputs: Vec::new(),
-        }],
-        graph: graph.finish(),
-        compression: Some(header.compression),
-        header_base: HeaderBase::New(display),
         blocks: job.blocks,
         strip_rows: job.strip_rows,
         zip_level: job.zip_level,
         resume: job.resume,
-        keep_going: false,
         rows: job.rows,
-        all_parts: false,
         attributes: job.attributes.clone(),
         media: job.media.clone().map(|review| Review {
             burn_in: None,
             ..review
         }),
-        slate: None,
+        ..sourced_job(source, display, output, frames, header.compression)
     }))
 }
 
@@ -705,25 +732,35 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
         let mut reads = Vec::new();
         for (i, (input, &source)) in job.inputs.iter().zip(&sources.inputs).enumerate() {
             let wanted = job.times[i].read(frame).unwrap_or(source.file_frame());
-            let file = input.path(source.file_frame()).display().to_string();
+            let path = input.path(source.file_frame());
+            let file = path.display().to_string();
             let missing = input.path(wanted).display().to_string();
+            let part = part_read(job, i, &path);
             reads.push(match source {
-                Source::Frame(f) if f == wanted => (file, "frame", None),
-                Source::Frame(_) => (file, "held", Some(missing)),
-                Source::Black(_) => (file, "black", Some(missing)),
+                Source::Frame(f) if f == wanted => (file, part, "frame", None),
+                Source::Frame(_) => (file, part, "held", Some(missing)),
+                Source::Black(_) => (file, None, "black", Some(missing)),
             });
             for merged in &job.merged[i] {
-                reads.push((merged.path(frame).display().to_string(), "frame", None));
+                reads.push((
+                    merged.path(frame).display().to_string(),
+                    None,
+                    "frame",
+                    None,
+                ));
             }
         }
         let output = job.output.path(frame).display().to_string();
         let line = match json {
             true => serde_json::json!({
                 "frame": frame,
-                "reads": reads.iter().map(|(file, source, missing)| {
+                "reads": reads.iter().map(|(file, part, source, missing)| {
                     let mut read = serde_json::json!({"file": file, "source": source});
                     if let Some(missing) = missing {
                         read["missing"] = missing.as_str().into();
+                    }
+                    if let Some(part) = part {
+                        read["part"] = part.as_str().into();
                     }
                     read
                 }).collect::<Vec<_>>(),
@@ -733,10 +770,18 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
             false => {
                 let reads: Vec<String> = reads
                     .iter()
-                    .map(|(file, source, missing)| match (source, missing) {
-                        (&"held", Some(missing)) => format!("{file} (held: {missing} is missing)"),
-                        (&"black", Some(missing)) => format!("black ({missing} is missing)"),
-                        _ => file.clone(),
+                    .map(|(file, part, source, missing)| {
+                        let file = match part {
+                            Some(part) => format!("{file} ({part})"),
+                            None => file.clone(),
+                        };
+                        match (source, missing) {
+                            (&"held", Some(missing)) => {
+                                format!("{file} (held: {missing} is missing)")
+                            }
+                            (&"black", Some(missing)) => format!("black ({missing} is missing)"),
+                            _ => file,
+                        }
                     })
                     .collect();
                 let label = job
@@ -749,6 +794,21 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
         text.push('\n');
     }
     text
+}
+
+/// The part of input `i`'s file `path` that its part or the view picks,
+/// named for the dry run's listing: none without a choice, or when the file
+/// cannot be read (the run says why).
+fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
+    if job.view.is_none() && job.parts[i].is_none() {
+        return None;
+    }
+    let file = ExrFile::open(path, None).ok()?;
+    let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
+    Some(match &file.header(part).own_attributes.layer_name {
+        Some(name) => format!("part {part} '{}'", name.utf8()),
+        None => format!("part {part}"),
+    })
 }
 
 pub(crate) fn run_with_progress(

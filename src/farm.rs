@@ -678,7 +678,7 @@ pub fn deadline_job(
     if let Some(&(at, _)) = task.files.iter().find(|(_, flow)| *flow == Flow::Out) {
         let output = Path::new(&task.args[at]);
         let pattern = crate::io::sequence::FramePattern::parse(&task.args[at])?;
-        let name = Path::new(&pattern.display())
+        let name = Path::new(&pattern.with_hashes())
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();

@@ -219,6 +219,12 @@ impl<'a> Node<'a> {
                 _ => return at.error(list.span(), "inputs is a list of node names"),
             },
         };
+        if let (Kind::Read(_), Some(first)) = (&kind, inputs.first()) {
+            return at.error(
+                first.span(),
+                format!("node '{name}' reads a file: a read node takes no inputs"),
+            );
+        }
         let node = Node {
             name,
             kind,
@@ -333,6 +339,15 @@ impl<'a> Node<'a> {
             at.line(self.span.start),
             self.name
         )
+    }
+}
+
+/// A read's `part`: a name, or an index as `--part` takes it (`"1"` or 1).
+fn part(at: &Source, value: &Spanned<Value>) -> Result<String> {
+    match value.get_ref() {
+        Value::Integer(index) if *index >= 0 => Ok(index.to_string()),
+        Value::String(name) => Ok(name.clone()),
+        _ => at.error(value.span(), "part is a part's name or index (0 or more)"),
     }
 }
 
@@ -501,7 +516,7 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
                 let Kind::Read(file) = &nodes[r].kind else {
                     unreachable!("reads are read nodes")
                 };
-                let part = nodes[r].get("part").map(|v| string(at, v)).transpose()?;
+                let part = nodes[r].get("part").map(|v| part(at, v)).transpose()?;
                 Ok((read_file(at, &nodes[r], beside(at.path, file))?, part))
             })
             .collect::<Result<_>>()?,

@@ -13,6 +13,21 @@ pub trait Op: Send + Sync {
         0
     }
 
+    /// Columns either side of an output pixel that the op may read from its
+    /// inputs: as far as its halo (a neighbourhood reads as far across as
+    /// down: blur, defocus, erode, luminance/chroma), unless it moves pixels
+    /// sideways (stereo). Grows the columns computed (`Graph::reach`).
+    fn across(&self) -> usize {
+        self.halo()
+    }
+
+    /// Whether the op reads luminance/chroma and luminance-only channels as
+    /// such (the conversion to RGB): every other op reads them as whatever
+    /// channels they are, so such an input must reach it converted.
+    fn reads_luminance(&self) -> bool {
+        false
+    }
+
     /// For an op that resamples (resize, transform): the region of its
     /// inputs it reads to compute region `out` of its own (Nuke's
     /// `_request`), unclipped. Its inputs then stream in rows and columns of
@@ -232,6 +247,18 @@ impl Graph {
             .position(|n| matches!(n, Node::Input(j) if *j == i))
     }
 
+    /// Whether an operation not converting luminance (`Op::reads_luminance`)
+    /// reads input `i` as it is.
+    pub fn reads_unconverted(&self, i: usize) -> bool {
+        let Some(n) = self.input_node(i) else {
+            return false;
+        };
+        self.nodes.iter().any(|node| {
+            matches!(node, Node::Op { op, inputs, .. }
+                if inputs.contains(&n) && !op.reads_luminance())
+        })
+    }
+
     /// The most that nodes hold at once as compose sweeps them in order,
     /// node `n` holding `size(n)`: from when it is computed until its last
     /// consumer has read it (the output, until it is written).
@@ -284,21 +311,26 @@ impl Graph {
         )
     }
 
-    /// How far the halos reach from the output: the deepest sum of halos
-    /// along any path. Taken sideways as well (`grow`): a neighbourhood
-    /// reads as far across as down (blur, defocus, erode, luminance/chroma).
-    pub fn reach(&self) -> i32 {
-        let reach = self.evaluate(
-            |_| 0usize,
-            |op, args: &[usize]| {
-                args.iter()
-                    .copied()
-                    .max()
-                    .unwrap_or(0)
-                    .saturating_add(op.halo())
-            },
-        )[self.output()];
-        i32::try_from(reach).unwrap_or(i32::MAX)
+    /// How far the output reaches into the inputs: the deepest sums of
+    /// `across` and of `halo` along any path.
+    pub fn reach(&self) -> Reach {
+        let sum = |per: fn(&dyn Op) -> usize| {
+            let reach = self.evaluate(
+                |_| 0usize,
+                |op, args: &[usize]| {
+                    args.iter()
+                        .copied()
+                        .max()
+                        .unwrap_or(0)
+                        .saturating_add(per(op))
+                },
+            )[self.output()];
+            i32::try_from(reach).unwrap_or(i32::MAX)
+        };
+        Reach {
+            across: sum(|op| op.across()),
+            down: sum(|op| op.halo()),
+        }
     }
 
     pub fn evaluate<T: Clone>(
@@ -329,20 +361,32 @@ pub struct Carried {
     pub shift: (i32, i32),
 }
 
-/// `rect` grown by `by` on every side (an empty one stays empty).
-pub fn grow(rect: IntegerBounds, by: i32) -> IntegerBounds {
-    if rect.size.area() == 0 || by == 0 {
+/// How far a graph's output reads its inputs: columns either side, rows
+/// above and below (`Graph::reach`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Reach {
+    pub across: i32,
+    pub down: i32,
+}
+
+/// `rect` grown by `by` on every side (an empty one stays empty), within
+/// OpenEXR's coordinates (where every file's windows are): a reach of whole
+/// rows (stereo's) leaves its width an i32.
+pub fn grow(rect: IntegerBounds, by: Reach) -> IntegerBounds {
+    if rect.size.area() == 0 {
         return rect;
     }
-    let (x0, y0) = (
-        rect.position.x().saturating_sub(by),
-        rect.position.y().saturating_sub(by),
-    );
-    let (x1, y1) = (
-        rect.end().x().saturating_add(by),
-        rect.end().y().saturating_add(by),
-    );
-    IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
+    let limit = i32::MAX / 2;
+    let out = |start: i32, end: i32, by: i32| {
+        let start = start.saturating_sub(by).max(-limit).min(start);
+        (
+            start,
+            (i64::from(end.saturating_add(by).min(limit).max(end)) - i64::from(start)) as usize,
+        )
+    };
+    let (x, width) = out(rect.position.x(), rect.end().x(), by.across);
+    let (y, height) = out(rect.position.y(), rect.end().y(), by.down);
+    IntegerBounds::new((x, y), (width, height))
 }
 
 /// The smallest window holding both; an empty window adds nothing.

@@ -9,8 +9,9 @@
 //! is RgbaInputFile's bit for bit. A `Y`-only image is grey (R = G = B = Y).
 //!
 //! A node of this op follows each input of a job with operations whose first
-//! frame is luminance/chroma or `Y` only (`colour_inputs`); frames that are
-//! RGB after all pass through it unchanged.
+//! frame (any part of it, with `--all-parts`) is luminance/chroma or `Y` only
+//! (`colour_inputs`); frames and parts that are RGB pass through it
+//! unchanged.
 
 use super::graph::{Graph, Op};
 use super::strip::{Rows, RowsMut};
@@ -100,6 +101,10 @@ pub struct FromLuminance {
 impl Op for FromLuminance {
     fn halo(&self) -> usize {
         REACH
+    }
+
+    fn reads_luminance(&self) -> bool {
+        true
     }
 
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {

@@ -3,6 +3,7 @@
 
 use super::deep_input::DeepInput;
 use super::graph::{grow, intersection, union, Graph, Node};
+use super::luminance_chroma;
 use super::region::Regions;
 use crate::error::{Error, Kind, Result};
 use crate::io::attributes::Edits;
@@ -365,6 +366,20 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     };
 
     let graph: &Graph = &job.graph;
+    // The conversion to RGB is set up from the first frame (of each part,
+    // with --all-parts: `commands::luminance_inputs`); a later frame that is
+    // luminance where it was not would be read as its Y, RY, BY channels.
+    if let Some(i) = (0..inputs.len()).find(|&i| {
+        deep[i].is_none()
+            && luminance_chroma::is_luminance(header_of(i))
+            && graph.reads_unconverted(i)
+    }) {
+        return Err(inputs[i].error(
+            "is luminance-only or luminance/chroma (Y, RY, BY) but the sequence's first frame \
+             is RGB, and the operations are set up from the first frame: make the frames alike, \
+             or run this frame on its own",
+        ));
+    }
     let channels = graph.evaluate(
         |i| match &deep[i] {
             Some(deep) => deep.channels.clone(),

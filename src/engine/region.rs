@@ -14,7 +14,7 @@
 //! nodes bottom row first, so that it holds a span, not the whole input.
 //! The rule and the memory bound: specs/architecture.md, "Regions of interest".
 
-use super::graph::{grow, intersection, union, Graph, Node};
+use super::graph::{grow, intersection, union, Graph, Node, Reach};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
 
@@ -28,7 +28,7 @@ pub struct Regions {
     resamplers: Vec<(usize, usize)>,
     /// What the graph's halos reach (`Graph::reach`), added around what a
     /// resampler requests: a node of its input's zone may read that far.
-    reach: i32,
+    reach: Reach,
     /// Per zone, whether it is read bottom-up.
     upward: Vec<bool>,
 }
@@ -235,7 +235,7 @@ impl Regions {
     /// `rows`: its zone's span, grown by what the halos reach (a node of
     /// the output's zone feeds halos too).
     pub fn needed_end(&self, spans: &[Range<i32>], n: usize) -> i32 {
-        self.span(spans, n).end.saturating_add(self.reach)
+        self.span(spans, n).end.saturating_add(self.reach.down)
     }
 
     /// Node `n`'s zone's span among `spans`.

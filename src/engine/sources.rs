@@ -69,6 +69,15 @@ pub fn resolve(
         let mut missing = missing;
         missing.sort_unstable();
         missing.dedup();
+        // A name that is there but leads nowhere is bad input, not a
+        // missing frame, whatever the policy.
+        if let Some((w, why)) = missing
+            .iter()
+            .find_map(|&w| broken_link(&input.path(w)).map(|why| (w, why)))
+        {
+            let frame = input.is_sequence().then_some(w);
+            return Err(Error::input(&input.path(w), frame, why));
+        }
         let on_disk = if input.is_sequence() {
             input.frames_on_disk()?
         } else {
@@ -161,6 +170,23 @@ fn nearest(on_disk: &[i64], frame: i64) -> i64 {
         0 => on_disk[0],
         i => on_disk[i - 1],
     }
+}
+
+/// Why `path` cannot be followed when its name is a symbolic link: it loops,
+/// or it leads to no file.
+fn broken_link(path: &std::path::Path) -> Option<String> {
+    if !std::fs::symlink_metadata(path)
+        .ok()?
+        .file_type()
+        .is_symlink()
+    {
+        return None;
+    }
+    let error = std::fs::metadata(path).err()?;
+    Some(match error.raw_os_error() == Some(libc::ELOOP) {
+        true => format!("is a symbolic link loop: {error}"),
+        false => format!("is a symbolic link to no file: {error}"),
+    })
 }
 
 #[cfg(test)]

@@ -6,6 +6,8 @@ use std::path::{Path, PathBuf};
 /// A file name with an optional frame-number placeholder.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FramePattern {
+    /// As the user wrote it, for messages.
+    text: String,
     prefix: String,
     suffix: String,
     /// `None` for a plain file name; else the minimum digit count (zero padded).
@@ -13,9 +15,10 @@ pub struct FramePattern {
 }
 
 impl FramePattern {
-    /// `####` stands for one zero-padded digit per `#`; `%0Nd` and `%d` as in printf.
-    /// The last placeholder in the text is the frame number, padded to at most
-    /// `MAX_PADDING` digits (a frame number never has more).
+    /// `####` stands for one zero-padded digit per `#`; `%0Nd` and `%d` as in
+    /// printf, `%%` then standing for `%`. The last placeholder in the text is
+    /// the frame number, padded to at most `MAX_PADDING` digits (a frame
+    /// number never has more).
     pub fn parse(text: &str) -> Result<Self> {
         let hashes = text.rfind('#').map(|end| {
             let start = text[..end].trim_end_matches('#').len();
@@ -32,12 +35,21 @@ impl FramePattern {
                     "'{text}' pads frame numbers to {padding} digits; at most {MAX_PADDING} (#### or %04d)"
                 )))
             }
-            Some((start, end, padding)) => FramePattern {
-                prefix: text[..start].to_string(),
-                suffix: text[end..].to_string(),
-                padding: Some(padding),
-            },
+            Some((start, end, padding)) => {
+                // A printf placeholder makes the name a printf format.
+                let literal = |part: &str| match placeholder == printf {
+                    true => part.replace("%%", "%"),
+                    false => part.to_string(),
+                };
+                FramePattern {
+                    text: text.to_string(),
+                    prefix: literal(&text[..start]),
+                    suffix: literal(&text[end..]),
+                    padding: Some(padding),
+                }
+            }
             None => FramePattern {
+                text: text.to_string(),
                 prefix: text.to_string(),
                 suffix: String::new(),
                 padding: None,
@@ -87,6 +99,12 @@ impl FramePattern {
 
     /// The pattern as the user wrote it, for messages.
     pub fn display(&self) -> String {
+        self.text.clone()
+    }
+
+    /// The pattern with `#` placeholders (one per digit), as render
+    /// managers name sequences.
+    pub fn with_hashes(&self) -> String {
         match self.padding {
             Some(width) => format!("{}{}{}", self.prefix, "#".repeat(width.max(1)), self.suffix),
             None => self.prefix.clone(),
@@ -219,11 +237,18 @@ pub fn split_time(text: &str) -> Result<(&str, InputTime)> {
 /// More digits than any i64 frame number has.
 const MAX_PADDING: usize = 20;
 
-/// `%d` or `%0Nd`: (start, end, padding).
+/// The last `%d` or `%0Nd`: (start, end, padding); `%%` is a `%` (printf's
+/// rule), never a placeholder's start.
 fn find_printf(text: &str) -> Option<(usize, usize, usize)> {
     let mut found = None;
-    for (start, _) in text.match_indices('%') {
+    let mut at = 0;
+    while let Some(start) = text[at..].find('%').map(|i| at + i) {
         let rest = &text[start + 1..];
+        at = start + 1;
+        if rest.starts_with('%') {
+            at += 1;
+            continue;
+        }
         let digits = rest.len() - rest.trim_start_matches(|c: char| c.is_ascii_digit()).len();
         if rest[digits..].starts_with('d') {
             // `%d` is unpadded; a number too long to parse is over the limit.
@@ -232,6 +257,7 @@ fn find_printf(text: &str) -> Option<(usize, usize, usize)> {
                 _ => rest[..digits].parse().unwrap_or(usize::MAX).max(1),
             };
             found = Some((start, start + 2 + digits, padding));
+            at = start + 2 + digits;
         }
     }
     found
@@ -364,6 +390,16 @@ mod tests {
             FramePattern::parse("x.%04d.exr").unwrap().path(-5),
             PathBuf::from("x.-005.exr")
         );
+        // `%%` is a `%` (printf's rule), and never starts a placeholder.
+        let percent = FramePattern::parse("50%%/x.%%d.%04d.exr").unwrap();
+        assert_eq!(percent.path(5), PathBuf::from("50%/x.%d.0005.exr"));
+        assert_eq!(
+            FramePattern::parse("x.%%04d.exr").unwrap().path(5),
+            PathBuf::from("x.%%04d.exr")
+        );
+        // Messages show the pattern as written; render managers get hashes.
+        assert_eq!(percent.display(), "50%%/x.%%d.%04d.exr");
+        assert_eq!(percent.with_hashes(), "50%/x.%d.####.exr");
     }
 
     #[test]

@@ -456,19 +456,19 @@ impl Pass {
     }
 
     /// Each output row from its taps among the first pass's rows, clamped
-    /// to the data window.
+    /// to the data window. The first pass's region may start left of the
+    /// output's (grown by the graph's reach: `engine::region`), so its
+    /// columns are offset.
     fn down(&self, across: &Rows, out: &mut RowsMut) {
         let (rows, columns) = (across.valid_rows(), out.valid_columns());
         if rows.is_empty() || columns.is_empty() {
             return;
         }
+        // The first pass's sample of the output's first valid column.
+        let first_column = (out.x + columns.start as i32 - across.x) as usize;
         let geometry = self.geometry();
         let mut weights = Vec::new();
         let mut sums = vec![0.0f32; columns.len()];
-        // The output's columns in the first pass's rows, which have their
-        // own region (it may start right or left of the output's).
-        let left = (out.x + columns.start as i32 - across.x) as usize;
-        let columns_in = left..left + columns.len();
         for y in out.valid_rows() {
             let first = geometry.taps(self.filter, y, &mut weights);
             let range = out.row_range(y);
@@ -479,8 +479,8 @@ impl Pass {
                 sums.fill(0.0);
                 for (i, &w) in weights.iter().enumerate() {
                     let from = (first + i as i32).clamp(rows.start, rows.end - 1);
-                    let line = across.row_range(from).start;
-                    let line = &source[line + columns_in.start..line + columns_in.end];
+                    let line = across.row_range(from).start + first_column;
+                    let line = &source[line..line + columns.len()];
                     for (sum, v) in sums.iter_mut().zip(line) {
                         *sum += w * v;
                     }

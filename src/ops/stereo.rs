@@ -1,7 +1,7 @@
 //! The other eye from one view and its depth: each pixel moves sideways by
 //! K / Z, the nearer pixel winning where two land on one; holes take the
 //! pixel beside them that is farther away (what the moved object uncovered).
-//! Row by row: no halo. specs/ops.md, "stereo".
+//! Row by row: no halo, but whole rows read. specs/ops.md, "stereo".
 
 use super::declare::{choice, input, params, Operation, Value};
 use crate::engine::graph::Op;
@@ -79,6 +79,12 @@ impl Stereo {
 }
 
 impl Op for Stereo {
+    /// A pixel may move any distance across its row (K / Z, Z near 0): the
+    /// whole row is read, so a crop keeps what comes in from beyond it.
+    fn across(&self) -> usize {
+        usize::MAX
+    }
+
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         inputs[0].to_vec()
     }

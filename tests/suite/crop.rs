@@ -196,52 +196,74 @@ fn a_crop_under_a_merge_is_black_outside_its_window() {
     assert_identical(&read_image(&d.join("out.exr")), &expected);
 }
 
-/// A blur behind a crop reads the rows and columns beyond the crop as the
-/// whole image has them (the crop's edges had been the blur's): the job's
-/// result is the crop of the whole blur, bit for bit, cut or not, whatever
-/// the strips.
-#[test]
-fn a_crop_of_a_blur_is_the_blurs_crop() {
-    let dir = tempfile::tempdir().unwrap();
-    let (path, img) = input(dir.path());
-    let whole = ours(
-        &path,
-        &dir.path().join("blur.exr"),
-        "blur",
-        &["--radius", "3"],
-    );
-    let (job, out) = (dir.path().join("job.toml"), dir.path().join("out.exr"));
-    for (region, cut, strip) in [
-        ("20x10+5+7", false, "64"),
-        ("20x10+5+7", false, "1"),
-        ("9x30+40+9", true, "4"),
-    ] {
-        std::fs::write(
-            &job,
+/// A job reading `input` through `chain` (TOML nodes from "in" to one named
+/// "last"), then cropped by `crop` (region, cut) if given, into `out`.
+fn crop_job(job: &Path, input: &Path, chain: &str, crop: Option<(&str, bool)>, out: &Path) {
+    let (crop, last) = match crop {
+        Some((region, cut)) => (
             format!(
-                "[[node]]\nname = \"in\"\nread = \"{}\"\n\n[[node]]\nname = \"soft\"\nop = \"blur\"\nradius = 3\ninputs = [\"in\"]\n\n[[node]]\nname = \"crop\"\nop = \"crop\"\nregion = \"{region}\"\ncut = {cut}\ninputs = [\"soft\"]\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"crop\"]\n",
-                s(&path),
-                s(&out)
+                "[[node]]\nname = \"crop\"\nop = \"crop\"\nregion = \"{region}\"\ncut = {cut}\ninputs = [\"last\"]\n\n"
             ),
-        )
-        .unwrap();
-        let ran = run(&["run", s(&job), "--strip-rows", strip, "--quiet"]);
+            "crop",
+        ),
+        None => (String::new(), "last"),
+    };
+    let text = format!(
+        "[[node]]\nname = \"in\"\nread = \"{}\"\n\n{chain}\n{crop}[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"{last}\"]\n",
+        s(input),
+        s(out)
+    );
+    std::fs::write(job, text).unwrap();
+}
+
+/// What a graph reads beyond a crop is read as the whole image has it: a
+/// blur's rows and columns (the crop's edges had been the blur's), a blur's
+/// behind a resize (its second pass had read the first's columns shifted by
+/// the blur's reach), the pixels stereo moves in from beyond the crop (lost:
+/// it had no reach). The job's result is the crop of the whole result, bit
+/// for bit, cut or not, whatever the strips.
+#[test]
+fn a_crop_of_a_result_is_the_whole_results_crop() {
+    let dir = tempfile::tempdir().unwrap();
+    let (path, _) = input(dir.path());
+    let (job, out) = (dir.path().join("job.toml"), dir.path().join("out.exr"));
+    let blur = "[[node]]\nname = \"last\"\nop = \"blur\"\nradius = 3\ninputs = [\"in\"]\n";
+    let resized = "[[node]]\nname = \"soft\"\nop = \"blur\"\nradius = 4\ninputs = [\"in\"]\n\n[[node]]\nname = \"last\"\nop = \"resize\"\nsize = \"96x72\"\ninputs = [\"soft\"]\n";
+    let stereo = "[[node]]\nname = \"last\"\nop = \"stereo\"\neye = \"left\"\ndisparity = 200\ninputs = [\"in\"]\n";
+    for chain in [blur, resized, stereo] {
+        crop_job(&job, &path, chain, None, &out);
+        let ran = run(&["run", s(&job), "--quiet"]);
         assert!(ran.status.success(), "{}", stderr(&ran));
-        let numbers: Vec<i32> = region
-            .split(['x', '+'])
-            .map(|v| v.parse().unwrap())
-            .collect();
-        let (w, h, x, y) = (numbers[0], numbers[1], numbers[2], numbers[3]);
-        let expected = match cut {
-            false => reference(&whole, (x, y, w as usize, h as usize), (0, 0), img.display),
-            true => reference(
-                &whole,
-                (0, 0, w as usize, h as usize),
-                (x, y),
-                (w as usize, h as usize),
-            ),
-        };
-        assert_identical(&read_image(&out), &expected);
+        let whole = read_image(&out);
+        for (region, cut, strip) in [
+            ("20x10+5+7", false, "64"),
+            ("20x10+5+7", false, "1"),
+            ("9x30+40+9", true, "4"),
+        ] {
+            crop_job(&job, &path, chain, Some((region, cut)), &out);
+            let ran = run(&["run", s(&job), "--strip-rows", strip, "--quiet"]);
+            assert!(ran.status.success(), "{}", stderr(&ran));
+            let numbers: Vec<i32> = region
+                .split(['x', '+'])
+                .map(|v| v.parse().unwrap())
+                .collect();
+            let (w, h, x, y) = (numbers[0], numbers[1], numbers[2], numbers[3]);
+            let expected = match cut {
+                false => reference(
+                    &whole,
+                    (x, y, w as usize, h as usize),
+                    (0, 0),
+                    whole.display,
+                ),
+                true => reference(
+                    &whole,
+                    (0, 0, w as usize, h as usize),
+                    (x, y),
+                    (w as usize, h as usize),
+                ),
+            };
+            assert_identical(&read_image(&out), &expected);
+        }
     }
 }
 

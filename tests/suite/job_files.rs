@@ -130,6 +130,8 @@ fn errors_name_the_job_file_line() {
         ("[[node]]\nname = \"m\"\nop = \"defocus\"\nfocus = 1\nscale = 1e30\nmax_radius = 4\ninputs = [\"a\"]\n", 13, "scale must be"),
         ("[[node]]\nname = \"m\"\nop = \"key\"\ngain = -1\ninputs = [\"a\"]\n", 12, "gain must be"),
         ("[[node]]\nname = \"m\"\nop = \"dilate\"\nradius = 2000\ninputs = [\"a\"]\n", 12, "radius must be a number from 0 to 1024"),
+        // A read's own mistakes at its own lines (inputs had been blamed on the write).
+        ("[[node]]\nname = \"m\"\nread = \"a.####.exr\"\ninputs = [\"a\"]\n", 12, "node 'm' reads a file: a read node takes no inputs"),
     ];
     for (body, line, words) in cases {
         let (code, message) = run_job(d, &format!("{READS}\n{body}{write}"));
@@ -140,6 +142,14 @@ fn errors_name_the_job_file_line() {
             "{body}\nwanted {at} {words}: {message}"
         );
     }
+    // A part neither a name nor an index, at its line.
+    let read = "[[node]]\nname = \"m\"\nread = \"a.####.exr\"\npart = -1\n";
+    let (code, message) = run_job(d, &format!("{read}{write}"));
+    assert_eq!(code, Some(2), "{message}");
+    assert!(
+        message.contains("job.toml:4:") && message.contains("part is a part's name or index"),
+        "{message}"
+    );
     // Found when the frame is planned: a layer the inputs lack, at the node's line.
     let body =
         "[[node]]\nname = \"m\"\nop = \"over\"\nlayers = [\"diffuse\"]\ninputs = [\"a\", \"b\"]\n";

@@ -567,3 +567,47 @@ fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
         assert!(message.contains("all-parts"), "{args:?}: {message}");
     }
 }
+
+/// A job's read takes a part by index as `--part` does (`part = 1` had been
+/// refused: "expected a string"), and `--dry-run` names the part each read
+/// takes, the one `--view` picks too (it had named the file only).
+#[test]
+fn a_jobs_part_index_and_the_dry_runs_part() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let left = random_rgba(1, 0, 0, 16, 8, Kind::Half, false);
+    let right = random_rgba(2, 0, 0, 16, 8, Kind::Half, false);
+    let input = d.join("stereo.exr");
+    write_parts(&input, &[("l", "left", &left), ("r", "right", &right)]);
+    let job = d.join("job.toml");
+    let output = d.join("out.exr");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"{}\"\npart = 1\n\n[[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"in\"]\n",
+            s(&input),
+            s(&output)
+        ),
+    )
+    .unwrap();
+    ok(&["run", s(&job), "-q"]);
+    let reference = d.join("reference.exr");
+    let second = format!("{}:1", s(&input));
+    ok(&["transcode", &second, "-o", s(&reference), "-q"]);
+    assert_identical(&read_parts(&output)[1], &read_parts(&reference)[1]);
+    let first = format!("{}:l", s(&input));
+    for (args, listed) in [
+        (&[s(&input), "--view", "right"][..], "(part 1 'r')"),
+        (&[&first], "(part 0 'l')"),
+        (
+            &[s(&input), "--view", "right", "--json"],
+            "\"part\":\"part 1 'r'\"",
+        ),
+    ] {
+        let mut all = vec!["premult", "-o", s(&output), "--dry-run"];
+        all.extend(args);
+        let out = succeed(exrcomp().args(&all));
+        let listing = String::from_utf8_lossy(&out.stdout);
+        assert!(listing.contains(listed), "{args:?}: {listing}");
+    }
+}

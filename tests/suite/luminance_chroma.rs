@@ -687,3 +687,89 @@ fn a_data_window_the_sampling_does_not_divide_is_refused() {
         "{message}"
     );
 }
+
+/// A random RGBA image and a luminance-only one (Y, half) of its size.
+fn rgba_and_grey() -> (common::Img, common::Img) {
+    let rgba = common::random_rgba(5, 0, 0, 24, 16, common::Kind::Half, false);
+    let luminance = rgba.channels["R"].clone();
+    let grey = common::Img {
+        channels: BTreeMap::from([("Y".to_string(), luminance)]),
+        ..common::random_rgba(5, 0, 0, 24, 16, common::Kind::Half, false)
+    };
+    (rgba, grey)
+}
+
+/// `--all-parts` converts each luminance-only part, whichever part comes
+/// first (the conversion had been set up from part 0 only: an RGB part 0
+/// left part 1's Y to the blur, "layer '(unnamed)' not found"): each part
+/// is the blur of that part alone.
+#[test]
+fn all_parts_converts_a_luminance_part_after_an_rgb_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let (rgba, grey) = rgba_and_grey();
+    let input = dir.path().join("two.exr");
+    let list = [("beauty", "main", &rgba), ("grey", "main", &grey)];
+    common::write_parts(&input, &list);
+    let output = dir.path().join("all.exr");
+    ok(&[
+        "blur",
+        s(&input),
+        "--radius",
+        "2",
+        "--all-parts",
+        "-o",
+        s(&output),
+        "-q",
+    ]);
+    let parts = common::read_parts(&output);
+    assert_eq!(parts.len(), 2);
+    for (p, part) in list.iter().enumerate() {
+        let single = dir.path().join(format!("part{p}.exr"));
+        common::write_parts(&single, &[*part]);
+        let reference = dir.path().join(format!("blur{p}.exr"));
+        ok(&[
+            "blur",
+            s(&single),
+            "--radius",
+            "2",
+            "-o",
+            s(&reference),
+            "-q",
+        ]);
+        common::assert_identical(&parts[p], &common::read_image(&reference));
+    }
+    assert!(parts[1].channels.contains_key("G") && !parts[1].channels.contains_key("Y"));
+}
+
+/// A frame luminance-only in a sequence whose first frame is RGB: one line
+/// naming the file and frame and what differs (it had been "layer
+/// '(unnamed)' not found"); nothing is written for it.
+#[test]
+fn a_luminance_frame_after_rgb_ones_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let (rgba, grey) = rgba_and_grey();
+    let pattern = dir.path().join("plate.####.exr");
+    for (frame, img) in [(1, &rgba), (2, &grey)] {
+        let path = dir.path().join(format!("plate.000{frame}.exr"));
+        common::write_image(
+            &path,
+            img,
+            common::compression("zip"),
+            exr::meta::attribute::LineOrder::Increasing,
+        );
+    }
+    let output = dir.path().join("out.####.exr");
+    let out = run(&["blur", s(&pattern), "--radius", "1", "-o", s(&output), "-q"]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert_eq!(message.trim().lines().count(), 1, "{message}");
+    for part in [
+        "plate.0002.exr",
+        "frame 2",
+        "luminance-only",
+        "first frame is RGB",
+    ] {
+        assert!(message.contains(part), "{part}: {message}");
+    }
+    assert!(!dir.path().join("out.0002.exr").exists());
+}

@@ -467,3 +467,58 @@ fn a_generated_image_too_large_is_refused_before_writing() {
     assert!(stderr(&out).contains("over the"), "{}", stderr(&out));
     assert_eq!(entries(dir.path()), Vec::<String>::new());
 }
+
+/// Messages name inputs as the user wrote them: a `%04d` pattern as
+/// `%04d` (it had been shown as `####`), `%%` being a `%` (printf's rule:
+/// it had been kept as `%%` in the names read), and a symbolic link loop
+/// as one (it had been "no such file").
+#[test]
+fn inputs_are_named_as_written_and_link_loops_as_loops() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "p%", [1, 2], 0);
+    let written = d.join("p%%.%04d.exr");
+    let output = d.join("o%%.%04d.exr");
+    ok(&["blur", s(&written), "--radius", "1", "-o", s(&output), "-q"]);
+    assert_eq!(
+        entries(d),
+        ["o%.0001.exr", "o%.0002.exr", "p%.0001.exr", "p%.0002.exr"]
+    );
+    let out = run(&[
+        "blur",
+        s(&written),
+        "--radius",
+        "1",
+        "-o",
+        s(&output),
+        "--frames",
+        "1-3",
+    ]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(3), "{message}");
+    assert!(
+        message.contains("p%%.%04d.exr: missing frame 3"),
+        "{message}"
+    );
+    // A plain file and a sequence's frame that loop.
+    std::os::unix::fs::symlink("loop.exr", d.join("loop.exr")).unwrap();
+    std::os::unix::fs::symlink("p%.0003.exr", d.join("p%.0003.exr")).unwrap();
+    for (input, named) in [("loop.exr", "loop.exr"), ("p%%.%04d.exr", "p%.0003.exr")] {
+        let out = run(&[
+            "blur",
+            s(&d.join(input)),
+            "--radius",
+            "1",
+            "-o",
+            s(&output),
+            "--frames",
+            "3",
+        ]);
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(3), "{message}");
+        assert!(
+            message.contains(named) && message.contains("is a symbolic link loop"),
+            "{message}"
+        );
+    }
+}
