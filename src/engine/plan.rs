@@ -30,6 +30,10 @@ use std::sync::Arc;
 /// flight stay a few megabytes.
 const STRIP_BYTES: usize = 2 << 20;
 
+/// Bytes a strip may hold, every node's rows and the inputs' decoded chunks
+/// together, before it is cut to fewer blocks (none under one).
+const HELD_BYTES: usize = 32 << 20;
+
 /// Most bytes one strip may take, every node's rows together: a few strips
 /// are in flight at once (decoded, composed, encoded), so this keeps a frame
 /// within a gigabyte or so. One block of rows over it is refused: only a
@@ -713,7 +717,10 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         .div_ceil(block_bytes.max(1))
         .max(rayon::current_num_threads())
         .next_multiple_of(grain / lines);
-    while blocks > 1 && strip_bytes(blocks * lines) > MAX_STRIP_BYTES {
+    // Behind a reduction (a 16K plate resized to 4K) a strip holds far more
+    // input than output: all it holds is kept within `HELD_BYTES` then,
+    // down to one block.
+    while blocks > 1 && strip_bytes(blocks * lines) > HELD_BYTES {
         blocks = (blocks / 2).max(1);
     }
     // Asked for (tests of strip boundaries), within the same memory bound.
