@@ -82,11 +82,11 @@ pub trait Op: Send + Sync {
         false
     }
 
-    /// For an op whose result is its one input's samples as they are,
-    /// wherever both data windows hold them, in the same pixels (a crop, a
-    /// pad, a channel rename or drop) or moved by whole pixels (a cut): what
-    /// lets an output block be a chunk of the input below it
-    /// (`passthrough.rs`); `None` for every other op.
+    /// For an op whose result is one input's samples as they are, wherever
+    /// both data windows hold them, in the same pixels (a crop, a pad, a
+    /// channel rename or drop, a resize to the same size) or moved by whole
+    /// pixels (a cut, a placement): what lets an output block be a chunk of
+    /// the input below it (`passthrough.rs`); `None` for every other op.
     fn carries(&self, _inputs: &[&[ChannelDescription]]) -> Option<Carried> {
         None
     }
@@ -353,8 +353,10 @@ impl Graph {
     }
 }
 
-/// What an op keeps of its one input's samples (`Op::carries`).
+/// What an op keeps of one input's samples (`Op::carries`).
 pub struct Carried {
+    /// The input whose samples it keeps.
+    pub input: usize,
     /// Per output channel, the input channel it carries.
     pub channels: Vec<usize>,
     /// Output pixel (x, y) is input pixel (x + dx, y + dy).

@@ -4,9 +4,10 @@
 //! the two files share compression, channels and block grid, the output block
 //! is that input's chunk: checked to decompress, then written as it is, with
 //! no decode, composite or encode. On a CG element over a plate most blocks
-//! are such blocks. Ops of one input that keep its samples (a crop, a
-//! rename) or move them by whole blocks (a cut) pass blocks the same way,
-//! stored at the output's coordinates. Rules: specs/architecture.md,
+//! are such blocks. Ops that keep an input's samples (a crop, a rename, a
+//! resize to the same size) or move them by whole blocks (a cut, a
+//! reformat's placement) pass blocks the same way, stored at the output's
+//! coordinates. Rules: specs/architecture.md,
 //! "Blocks passed through".
 
 use super::decode::{decode_strip, InputCursor, Region};
@@ -18,7 +19,7 @@ use crate::error::Result;
 use crate::io::writer::IndexedChunk;
 use exr::block::chunk::CompressedBlock;
 use exr::math::Vec2;
-use exr::meta::attribute::IntegerBounds;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::prelude::Compression;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -84,11 +85,15 @@ impl PassThrough {
                     tests.push((node, first, inputs[1], shift));
                     node = inputs[1];
                 }
-                Node::Op { op, inputs, .. } if inputs.len() == 1 => {
-                    let carried = op.carries(&[&plan.channels[inputs[0]]])?;
+                Node::Op { op, inputs, .. } => {
+                    let lists: Vec<&[ChannelDescription]> = inputs
+                        .iter()
+                        .map(|&n| plan.channels[n].as_slice())
+                        .collect();
+                    let carried = op.carries(&lists)?;
                     map = map.iter().map(|&k| carried.channels[k]).collect();
                     shift = (shift.0 + carried.shift.0, shift.1 + carried.shift.1);
-                    node = inputs[0];
+                    node = inputs[carried.input];
                 }
                 _ => return None,
             }

@@ -294,6 +294,7 @@ impl Op for Crop {
     /// moved by whole pixels (a cut, a placement).
     fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Carried> {
         Some(Carried {
+            input: 0,
             channels: (0..inputs[0].len()).collect(),
             shift: self.shift(),
         })
@@ -317,38 +318,42 @@ impl Op for Crop {
             }
             return Ok(());
         }
-        // A cut: output pixel (x, y) is input pixel (x + dx, y + dy), where
-        // both have data (a merge it feeds computes rows and columns beyond
-        // it, which stay black).
-        let output = intersection(
-            IntegerBounds::new((out.x, out.y), (out.width, out.height)),
-            out.valid,
-        );
-        let have = intersection(
-            moved(output, (dx, dy)),
-            intersection(
-                input.valid,
-                IntegerBounds::new((input.x, input.y), (input.width, input.height)),
-            ),
-        );
-        if have.size.area() == 0 {
-            return Ok(());
-        }
-        let (x0, x1) = (have.position.x(), have.end().x());
-        for y in have.position.y()..have.end().y() {
-            let (to, from) = (out.row_range(y - dy).start, input.row_range(y).start);
-            let (to, from) = (
-                to + (x0 - dx - out.x) as usize,
-                from + (x0 - input.x) as usize,
-            );
-            let count = (x1 - x0) as usize;
-            for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
-                plane
-                    .bytes_mut(to..to + count)
-                    .copy_from_slice(source.bytes(from..from + count));
-            }
-        }
+        copy_moved(input, out, (dx, dy));
         Ok(())
+    }
+}
+
+/// Output pixel (x, y) is input pixel (x + dx, y + dy), where both have data
+/// (a merge the op feeds computes rows and columns beyond it, which stay
+/// black): a cut, a placement, a resize to the same size.
+pub fn copy_moved(input: &Rows, out: &mut RowsMut, (dx, dy): (i32, i32)) {
+    let output = intersection(
+        IntegerBounds::new((out.x, out.y), (out.width, out.height)),
+        out.valid,
+    );
+    let have = intersection(
+        moved(output, (dx, dy)),
+        intersection(
+            input.valid,
+            IntegerBounds::new((input.x, input.y), (input.width, input.height)),
+        ),
+    );
+    if have.size.area() == 0 {
+        return;
+    }
+    let (x0, x1) = (have.position.x(), have.end().x());
+    for y in have.position.y()..have.end().y() {
+        let (to, from) = (out.row_range(y - dy).start, input.row_range(y).start);
+        let (to, from) = (
+            to + (x0 - dx - out.x) as usize,
+            from + (x0 - input.x) as usize,
+        );
+        let count = (x1 - x0) as usize;
+        for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
+            plane
+                .bytes_mut(to..to + count)
+                .copy_from_slice(source.bytes(from..from + count));
+        }
     }
 }
 

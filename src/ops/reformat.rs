@@ -1,8 +1,9 @@
 //! `reformat`: an image into a format, as Nuke's Reformat: resized to the
 //! format's width or height (aspect kept), to fit inside it or fill it, or
 //! distorted to it (`resize`'s passes), then placed at the format's corner or
-//! centred (`crop`'s placement); the display window is the format. Formats
-//! by Nuke's names or WxH. Rules: specs/ops.md, "reformat".
+//! centred (`crop`'s placement); the display window is the format. At scale
+//! 1 the image is copied and moved, so its chunks pass through. Formats by
+//! Nuke's names or WxH. Rules: specs/ops.md, "reformat".
 
 use super::crop::Crop;
 use super::declare::{input, params, Args, Length, Operation, Value};

@@ -3,10 +3,12 @@
 //! resampling passes: across the rows (into f32), then down the columns,
 //! each streaming its input in a region of its own (`Op::request`), so the
 //! vertical pass holds a few rows of the horizontal one, never the image.
+//! At the same size the samples are copied, as oiiotool keeps the image.
 //! Formulas: specs/ops.md, "resize".
 
+use super::crop::copy_moved;
 use super::declare::{choice, input, params, Args, Length, Operation, Value};
-use crate::engine::graph::{GraphBuilder, NodeId, Op};
+use crate::engine::graph::{Carried, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
@@ -270,10 +272,14 @@ struct Geometry {
     /// them: wider by the ratio when enlarging.
     width: f32,
     radius: i32,
+    /// The image keeps its size on both axes: its samples are copied, bit
+    /// for bit, whatever the filter (as oiiotool's `--resize` and `--fit`;
+    /// one side kept and the other changed is filtered on both, as there).
+    copies: bool,
 }
 
 impl Geometry {
-    fn new(from: Range<i32>, length: usize, filter: Filter) -> Self {
+    fn new(from: Range<i32>, length: usize, filter: Filter, copies: bool) -> Self {
         let to = from.start..from.start + length as i32;
         let ratio = length as f32 / (from.end - from.start) as f32;
         let width = filter.width() * ratio.max(1.0);
@@ -284,6 +290,7 @@ impl Geometry {
             ratio,
             width,
             radius,
+            copies,
         }
     }
 
@@ -363,8 +370,12 @@ impl Op for Pass {
         // pass's second input: the first's is already resized across).
         let display = inputs[0];
         let from = self.axis.range(display);
-        let length = self.target.length(self.axis, inputs[inputs.len() - 1]);
-        let new = Geometry::new(from, length, self.filter);
+        let original = inputs[inputs.len() - 1];
+        let length = self.target.length(self.axis, original);
+        let copies = [Axis::X, Axis::Y]
+            .iter()
+            .all(|&a| self.target.length(a, original) == a.range(original).len());
+        let new = Geometry::new(from, length, self.filter, copies);
         let first = self.geometry.get_or_init(|| new.clone());
         if *first != new {
             return Err(format!(
@@ -387,8 +398,9 @@ impl Op for Pass {
     }
 
     fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
-        let Some(geometry) = self.geometry.get() else {
-            // Asked before any frame (whether it resamples): it does.
+        // Asked before any frame (whether it resamples: it does), or at the
+        // same size: the output's own pixels.
+        let Some(geometry) = self.geometry.get().filter(|g| !g.copies) else {
             return Some(out);
         };
         let source = geometry.source(self.filter, self.axis.range(out));
@@ -409,10 +421,23 @@ impl Op for Pass {
             .collect()
     }
 
+    /// At the same size, the vertical pass is its original input (whose
+    /// types it has), the horizontal one unread.
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Carried> {
+        let copies = self.axis == Axis::Y && self.geometry.get()?.copies;
+        copies.then(|| Carried {
+            input: 1,
+            channels: (0..inputs[1].len()).collect(),
+            shift: (0, 0),
+        })
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
-        match self.axis {
-            Axis::X => self.across(inputs[0], out),
-            Axis::Y => self.down(inputs[0], out),
+        match (self.axis, self.geometry().copies) {
+            (Axis::X, true) => {}
+            (Axis::Y, true) => copy_moved(inputs[1], out, (0, 0)),
+            (Axis::X, false) => self.across(inputs[0], out),
+            (Axis::Y, false) => self.down(inputs[0], out),
         }
         Ok(())
     }

@@ -304,6 +304,7 @@ impl Op for Shuffle {
             .map(|o| o.source.ok().map(|(_, i)| i))
             .collect::<Option<_>>()?;
         Some(Carried {
+            input: 0,
             channels,
             shift: (0, 0),
         })

@@ -32,6 +32,7 @@ mod peers;
 mod proxy;
 mod real_files;
 mod resize;
+mod resize_same;
 mod review_media;
 mod sequences_and_errors;
 mod shuffle;

@@ -246,3 +246,47 @@ fn a_merge_under_or_over_a_cut_passes_where_its_foreground_is_transparent() {
     );
     assert_placed(&out);
 }
+
+/// `reformat` at the same size is a placement: every chunk is the input's,
+/// stored at the output's coordinates, scanline or tiled, its data window
+/// the display window (as oiiotool's --fit, which drops the data window's
+/// offset, is compared) or offset in it; at another size none is.
+#[test]
+fn a_reformat_that_keeps_the_size_copies_every_chunk() {
+    let dir = tempfile::tempdir().unwrap();
+    let b = dir.path().join("b.exr");
+    let full = random_rgba(25, 0, 0, 70, 50, Kind::Half, true);
+    let mut offset = random_rgba(26, 3, 5, 70, 50, Kind::Half, true);
+    offset.display = (76, 60);
+    let tiles = Encoding {
+        compression: Compression::ZIP16,
+        blocks: Blocks::Tiles(Vec2(16, 16)),
+        line_order: LineOrder::Increasing,
+    };
+    let out = dir.path().join("out.exr");
+    for (encoding, count) in [(zip_scanlines(), 4), (tiles, 20)] {
+        let all: Vec<Option<usize>> = (0..count).map(Some).collect();
+        let mut full = full.clone();
+        full.display = (70, 50);
+        write_encoded(&b, &full, encoding);
+        // Centred in a format as tall or as wide: 4 columns right, 3 rows
+        // down.
+        for format in ["70x50", "78x50", "70x56"] {
+            let args = ["--format", format, "--fit", "fit", "--center"];
+            run_as_encoded("reformat", &b, &args, &["--fit", format], &out);
+            assert_placed(&out);
+            assert_eq!(sources(&out, &b), all, "{format}");
+        }
+        let half = ["--format", "35x25", "--fit", "fit", "--quiet"];
+        check_run(&[&["reformat", s(&b), "-o", s(&out)][..], &half].concat());
+        assert!(sources(&out, &b).iter().all(Option::is_none));
+        write_encoded(&b, &offset, encoding);
+        let centred = ["--format", "76x66", "--fit", "width", "--center", "--quiet"];
+        check_run(&[&["reformat", s(&b), "-o", s(&out)][..], &centred].concat());
+        let mut expected = offset.clone();
+        (expected.x, expected.y, expected.display) = (3, 8, (76, 66));
+        assert_identical(&read_image(&out), &expected);
+        assert_placed(&out);
+        assert_eq!(sources(&out, &b), all, "offset");
+    }
+}
