@@ -13,7 +13,7 @@ use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use std::ops::Range;
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex, OnceLock};
 
 pub const RESIZE: Operation = Operation {
     name: "resize",
@@ -347,7 +347,19 @@ pub struct Pass {
     target: Target,
     filter: Filter,
     geometry: OnceLock<Geometry>,
+    /// The last bands' taps across (`Pass::across`): every band of a frame
+    /// has the same columns, so they are worked out (with their sines)
+    /// once, not per band.
+    across_taps: Mutex<Option<(TapsKey, Arc<ColumnTaps>)>>,
 }
+
+/// Per output column: the offsets in the input row of its taps, and their
+/// weights.
+type ColumnTaps = Vec<(Vec<usize>, Vec<f32>)>;
+
+/// What the taps across depend on besides the geometry: the output's first
+/// column and valid columns, the input's first column and valid columns.
+type TapsKey = (i32, Range<usize>, i32, Range<usize>);
 
 impl Pass {
     fn new(axis: Axis, target: Target, filter: Filter) -> Self {
@@ -356,6 +368,7 @@ impl Pass {
             target,
             filter,
             geometry: OnceLock::new(),
+            across_taps: Mutex::new(None),
         }
     }
 
@@ -444,6 +457,37 @@ impl Op for Pass {
 }
 
 impl Pass {
+    /// The taps of output `columns` in `input`'s rows, clamped to its valid
+    /// `data` columns: the last bands', if they were the same.
+    fn taps_across(
+        &self,
+        input: &Rows,
+        out: &RowsMut,
+        columns: Range<usize>,
+        data: Range<usize>,
+    ) -> Arc<ColumnTaps> {
+        let key = (out.x, columns.clone(), input.x, data.clone());
+        let mut cached = self.across_taps.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, taps)) = cached.as_ref().filter(|(k, _)| *k == key) {
+            return taps.clone();
+        }
+        let geometry = self.geometry();
+        let mut weights = Vec::new();
+        let (lo, hi) = (data.start as i32, data.end as i32 - 1);
+        let taps: ColumnTaps = columns
+            .map(|c| {
+                let first = geometry.taps(self.filter, out.x + c as i32, &mut weights);
+                let at = (0..weights.len() as i32)
+                    .map(|i| (first + i - input.x).clamp(lo, hi) as usize)
+                    .collect();
+                (at, weights.clone())
+            })
+            .collect();
+        let taps = Arc::new(taps);
+        *cached = Some((key, taps.clone()));
+        taps
+    }
+
     /// Each row filtered across: output column x from its taps in the row,
     /// clamped to the input's data window.
     fn across(&self, input: &Rows, out: &mut RowsMut) {
@@ -451,25 +495,14 @@ impl Pass {
         if columns.is_empty() || data.is_empty() {
             return;
         }
-        let geometry = self.geometry();
-        // Per output column: the offsets in the input row of its taps.
-        let mut weights = Vec::new();
-        let mut taps: Vec<(Vec<usize>, Vec<f32>)> = Vec::with_capacity(columns.len());
-        let (lo, hi) = (data.start as i32, data.end as i32 - 1);
-        for c in columns.clone() {
-            let first = geometry.taps(self.filter, out.x + c as i32, &mut weights);
-            let at = (0..weights.len() as i32)
-                .map(|i| (first + i - input.x).clamp(lo, hi) as usize)
-                .collect();
-            taps.push((at, weights.clone()));
-        }
+        let taps = self.taps_across(input, out, columns.clone(), data);
         let mut row = vec![0.0f32; input.width];
         let mut values = vec![0.0f32; columns.len()];
         for y in out.valid_rows() {
             let range = out.row_range(y);
             for (c, plane) in out.planes.iter_mut().enumerate() {
                 input.planes[c].read_f32(input.row_range(y), &mut row);
-                for (v, (at, w)) in values.iter_mut().zip(&taps) {
+                for (v, (at, w)) in values.iter_mut().zip(taps.iter()) {
                     *v = at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum();
                 }
                 plane.write_f32(
