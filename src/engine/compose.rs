@@ -36,10 +36,8 @@ pub struct Composer<'g> {
     /// Output rows are handed out in whole multiples of this (a block).
     emit_multiple: usize,
     window: IntegerBounds,
-    /// Per node: the rows and columns its window covers (`region.rs`).
-    rects: Vec<IntegerBounds>,
-    /// Per node: whether it is computed bottom-up.
-    upward: Vec<bool>,
+    /// The rows and columns each node's window covers, and whether it is
+    /// computed bottom-up (`region.rs`).
     regions: Regions,
 }
 
@@ -55,13 +53,11 @@ impl<'g> Composer<'g> {
     ) -> Self {
         let window = regions.rect(graph.output());
         let top = window.position.y();
-        let rects: Vec<IntegerBounds> = (0..graph.nodes.len()).map(|n| regions.rect(n)).collect();
-        let upward: Vec<bool> = (0..graph.nodes.len()).map(|n| regions.upward(n)).collect();
         let windows = (0..graph.nodes.len())
             .map(|n| {
-                let rect = rects[n];
+                let rect = regions.rect(n);
                 // Empty, at the row computed first.
-                let first = match upward[n] {
+                let first = match regions.upward(n) {
                     true => rect.end().y(),
                     false => rect.position.y(),
                 };
@@ -89,8 +85,6 @@ impl<'g> Composer<'g> {
             fed: top,
             emit_multiple,
             window,
-            rects,
-            upward,
             regions: regions.clone(),
         }
     }
@@ -102,7 +96,7 @@ impl<'g> Composer<'g> {
     /// Where node `n` computes next: the end of its window, or its start
     /// computing bottom-up.
     fn frontier(&self, n: usize) -> i32 {
-        match self.upward[n] {
+        match self.regions.upward(n) {
             true => self.windows[n].y,
             false => self.windows[n].end(),
         }
@@ -112,8 +106,8 @@ impl<'g> Composer<'g> {
     /// `asked` of its own (reached from its frontier): `i` has computed all
     /// its rows, or as far as `asked` reaches in its direction.
     fn holds(&self, i: usize, asked: IntegerBounds) -> bool {
-        let (held, rect) = (self.frontier(i), self.rects[i]);
-        match self.upward[i] {
+        let (held, rect) = (self.frontier(i), self.regions.rect(i));
+        match self.regions.upward(i) {
             true => held <= rect.position.y() || asked.position.y().max(rect.position.y()) >= held,
             false => held >= rect.end().y() || asked.end().y().min(rect.end().y()) <= held,
         }
@@ -122,9 +116,12 @@ impl<'g> Composer<'g> {
     /// How far node `n` can compute from its inputs' windows, from its
     /// frontier `start` (downwards, or upwards for a node computed so).
     fn computable(&self, n: usize, op: &dyn Op, inputs: &[usize], start: i32) -> i32 {
-        let (top, bottom) = (self.rects[n].position.y(), self.rects[n].end().y());
-        let up = self.upward[n];
-        if op.request(self.rects[n]).is_none() {
+        let (top, bottom) = (
+            self.regions.rect(n).position.y(),
+            self.regions.rect(n).end().y(),
+        );
+        let up = self.regions.upward(n);
+        if op.request(self.regions.rect(n)).is_none() {
             // The fast path: inputs share the node's rows (and its order).
             let halo = op.halo() as i32;
             return match up {
@@ -150,7 +147,7 @@ impl<'g> Composer<'g> {
                 true => to..start,
                 false => start..to,
             };
-            let asked = op.request(rows_of(self.rects[n], &rows));
+            let asked = op.request(rows_of(self.regions.rect(n), &rows));
             let asked = asked.expect("a resampling op");
             inputs.iter().all(|&i| self.holds(i, asked))
         };
@@ -191,7 +188,7 @@ impl<'g> Composer<'g> {
             match graph_node {
                 Node::Input(i) => {
                     let strip = strips[*i].take().expect("one strip per input");
-                    match self.upward[n] {
+                    match self.regions.upward(n) {
                         true => self.windows[n].prepend(strip),
                         false => self.windows[n].append(strip),
                     }
@@ -199,10 +196,10 @@ impl<'g> Composer<'g> {
                 Node::Op { op, inputs, .. } => {
                     let start = self.frontier(n);
                     let mut end = self.computable(n, op.as_ref(), inputs, start);
-                    if !self.upward[n] && op.request(self.rects[n]).is_some() {
+                    if !self.regions.upward(n) && op.request(self.regions.rect(n)).is_some() {
                         end = end.min(self.regions.needed_end(&spans, n));
                     }
-                    let rows = match self.upward[n] {
+                    let rows = match self.regions.upward(n) {
                         true => end..start,
                         false => start..end,
                     };
@@ -212,7 +209,7 @@ impl<'g> Composer<'g> {
                         let (earlier, rest) = self.windows.split_at_mut(n);
                         let node = &mut rest[0];
                         let height = rows.len();
-                        match self.upward[n] {
+                        match self.regions.upward(n) {
                             true => node.grow_up(height),
                             false => node.grow(height),
                         }
@@ -263,7 +260,7 @@ impl<'g> Composer<'g> {
     /// before the first row a consumer's rows still to compute read, or
     /// after the last for a node computed bottom-up.
     fn forget_used_rows(&mut self, n: usize) {
-        let up = self.upward[n];
+        let up = self.regions.upward(n);
         let mut keep = match (n == self.graph.output(), up) {
             (true, _) => self.emitted,
             (false, true) => i32::MIN,
@@ -273,7 +270,7 @@ impl<'g> Composer<'g> {
             let Node::Op { op, .. } = &self.graph.nodes[c] else {
                 continue;
             };
-            let (frontier, rect) = (self.frontier(c), self.rects[c]);
+            let (frontier, rect) = (self.frontier(c), self.regions.rect(c));
             let needed = match op.request(rect) {
                 // The same zone, so the same order: the halo behind.
                 None if up => frontier + op.halo() as i32,
@@ -282,7 +279,7 @@ impl<'g> Composer<'g> {
                 // row's footprint where the consumer reads the other way
                 // from this node's order (a zone both orders read).
                 Some(_) => {
-                    let rest = match self.upward[c] {
+                    let rest = match self.regions.upward(c) {
                         true => rect.position.y()..frontier,
                         false => frontier..rect.end().y(),
                     };

@@ -709,7 +709,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         .filter(|&i| deep[i].is_none() && header_of(i).blocks.has_tiles())
         .map(|i| levels[i].block.y())
         .fold(lines, lcm);
-    let grain = match strip_bytes(grain) <= MAX_STRIP_BYTES / 8 {
+    let grain = match strip_bytes(grain) <= HELD_BYTES {
         true => grain,
         false => lines,
     };

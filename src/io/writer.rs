@@ -212,7 +212,7 @@ pub fn write_file(
             }
             Ok(())
         })?;
-        batches.finished().map_err(|e| fail(&e))?;
+        batches.check().map_err(|e| fail(&e))?;
         let table_bytes: Vec<u8> = offsets
             .iter()
             .flatten()
@@ -307,16 +307,12 @@ impl<'f> Batches<'f> {
         self.failed.lock().unwrap_or_else(|e| e.into_inner())
     }
 
+    /// The first failure so far (all of them, once the scope has ended).
     fn check(&self) -> std::io::Result<()> {
         match self.lock().take() {
             Some(e) => Err(e),
             None => Ok(()),
         }
-    }
-
-    /// The first failure, once every batch has been written.
-    fn finished(&self) -> std::io::Result<()> {
-        self.check()
     }
 }
 
