@@ -1,6 +1,6 @@
 //! The most memory one frame's run holds at once, from its plan: the bound
-//! of specs/architecture.md ("Memory bound"), which a farm job asks of its
-//! workers.
+//! of specs/architecture.md ("Memory bound", and "Regions of interest" for
+//! nodes that stream at another size), which a farm job asks of its workers.
 
 use super::graph::{Graph, Node};
 use super::plan::FramePlan;
@@ -11,17 +11,20 @@ const PROGRAM: u64 = 10 << 20;
 /// Bytes at most resident while `plan` runs through `graph`:
 ///
 /// ```text
-/// W × [ Σ_inputs 3 (S + 2 L_i) b_i + Σ_inputs 2 S b_i
-///     + max_live Σ (S + 2 h_n) b_n + (5 + 2 B) S b_o ] + 10 MiB
+/// Σ_inputs 3 (S_i + 2 L_i) R_i b_i + Σ_inputs 2 S_i R_i b_i
+///     + max_live Σ W_n (S_n + 2 h_n) b_n + (5 + 2 B) S W b_o + 10 MiB
 /// ```
 ///
-/// with an input's terms across the width it is decoded over (its data
-/// window read: none for a black input), and `S` at most the rows computed
-/// (a strip never holds more), and `B` the batches of chunks the writer
-/// lets wait (`writer::IN_FLIGHT`), each with its bytes laid out.
+/// with `W` and `S` the output's width and strip rows (at most the rows
+/// computed: a strip never holds more), `W_n` a node's region's width and
+/// `S_n` the most rows of its region a strip spans (`S` where nothing
+/// resamples), `R_i` the width an input is decoded over (its data window
+/// read: none for a black input) and `S_i` its node's span, and `B` the
+/// batches of chunks the writer lets wait (`writer::IN_FLIGHT`), each with
+/// its bytes laid out.
 pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
-    let width = plan.computed.size.width() as u64;
+    let spans = spanned_rows(plan, graph);
     let bytes = |channels: &[exr::meta::attribute::ChannelDescription]| {
         channels
             .iter()
@@ -31,8 +34,9 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let decode: u64 = (0..plan.inputs.len())
         .map(|i| {
             let row = plan.read[i].size.width() as u64 * bytes(&plan.header_of(i).channels.list);
+            let rows = graph.input_node(i).map_or(s, |n| spans[n]);
             let lines = plan.levels[i].block.y() as u64;
-            row * (3 * (s + 2 * lines) + 2 * s)
+            row * (3 * (rows + 2 * lines) + 2 * rows)
         })
         .sum();
     // A node's window holds its consumers' halo above and below the strip.
@@ -44,8 +48,35 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
             }
         }
     }
-    let windows = graph.peak(|n| (width * (s + 2 * halo[n]) * bytes(&plan.channels[n])) as usize);
+    let windows = graph.peak(|n| {
+        let width = plan.regions.rect(n).size.width() as u64;
+        (width * (spans[n] + 2 * halo[n]) * bytes(&plan.channels[n])) as usize
+    });
+    let width = plan.computed.size.width() as u64;
     let waiting = 2 * crate::io::writer::IN_FLIGHT as u64;
     let encode = (5 + waiting) * s * width * bytes(&plan.header.channels.list);
     decode + windows as u64 + encode + PROGRAM
+}
+
+/// Per node, the most rows of its region one strip spans: the strip's own
+/// where nothing resamples; behind a resize or transform, the most its
+/// zone's span takes over the frame's strips (the whole region for a zone
+/// read whole, a turn near 90 degrees).
+fn spanned_rows(plan: &FramePlan, graph: &Graph) -> Vec<u64> {
+    let s = plan.strip_rows.clamp(1, plan.computed.size.height().max(1));
+    let mut most = vec![s as u64; graph.nodes.len()];
+    if plan.regions.shared() {
+        return most;
+    }
+    most.fill(0);
+    let (top, bottom) = (plan.computed.position.y(), plan.computed.end().y());
+    for start in (top..bottom).step_by(s) {
+        let spans = plan
+            .regions
+            .spans(graph, start..bottom.min(start + s as i32));
+        for (n, most) in most.iter_mut().enumerate() {
+            *most = (*most).max(plan.regions.span(&spans, n).len() as u64);
+        }
+    }
+    most
 }

@@ -320,6 +320,31 @@ fn a_16k_plate_resized_to_4k_stays_small_and_flat_in_height() {
         tall as f64 <= short as f64 * 1.25,
         "short {short} B, 4x taller {tall} B"
     );
+    // The memory bound a farm job asks for counts the 16K-wide input's
+    // rows behind the resize (it once counted the output's width alone:
+    // 53 MiB for a 102 MiB peak).
+    let dry = run(&[
+        "resize",
+        s(&d.join("tall.exr")),
+        "-o",
+        s(&d.join("tall_4k.exr")),
+        "--scale",
+        "0.25",
+        "--dry-run",
+    ]);
+    assert!(dry.status.success(), "{}", stderr(&dry));
+    let said = stderr(&dry);
+    let bound: u64 = said
+        .split("holding at most ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|mib| mib.parse().ok())
+        .unwrap_or_else(|| panic!("no bound in {said}"));
+    assert!(
+        tall <= bound << 20,
+        "peak {tall} B over the bound {bound} MiB"
+    );
+    assert!(bound < 256, "a bound of {bound} MiB is far over the peak");
 }
 
 fn windows(
