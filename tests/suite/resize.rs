@@ -316,8 +316,10 @@ fn a_16k_plate_resized_to_4k_stays_small_and_flat_in_height() {
     };
     let (short, tall) = (peak("short"), peak("tall"));
     assert!(tall < 200 << 20, "4x taller: {tall} B");
+    // (Looser than the bound below: a pipelined run's peak varies by up to
+    // 30% with how its stages' buffers coincide, tests/suite/memory.rs.)
     assert!(
-        tall as f64 <= short as f64 * 1.25,
+        tall as f64 <= short as f64 * 1.5,
         "short {short} B, 4x taller {tall} B"
     );
     // The memory bound a farm job asks for counts the 16K-wide input's
