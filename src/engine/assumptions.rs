@@ -3,7 +3,7 @@
 //! (`Op::assumptions`). They are read from the first frame of each input;
 //! `commands::run_job` prints each once, unless `--quiet`.
 
-use super::graph::Node;
+use super::graph::{Display, Node};
 use super::plan::{HeaderBase, Job, Source};
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
@@ -37,7 +37,7 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
     let graph = &job.graph;
     // As a frame's plan does, display windows before data windows; one an
     // op refuses is the run's error, not a warning's.
-    let displays = graph.display_windows(|i| headers[i].shared_attributes.display_window);
+    let displays = graph.display_windows(|i| Display::of(&headers[i]));
     if displays.iter().any(Result::is_err) {
         return warnings;
     }

@@ -2,8 +2,40 @@
 
 use super::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use exr::meta::header::Header;
 use std::ops::Range;
 use std::sync::Arc;
+
+/// How an image is shown: its display window, and its pixels' width over
+/// their height (`pixelAspectRatio`: 2 for an anamorphic 2:1 plate).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Display {
+    pub window: IntegerBounds,
+    pub pixel_aspect: f32,
+}
+
+impl Display {
+    /// `window` with square pixels.
+    pub fn square(window: IntegerBounds) -> Self {
+        Display {
+            window,
+            pixel_aspect: 1.0,
+        }
+    }
+
+    /// A header's; a ratio no image can have (0, negative, not finite: a
+    /// damaged header) is taken as square pixels.
+    pub fn of(header: &Header) -> Self {
+        let ratio = header.shared_attributes.pixel_aspect;
+        Display {
+            window: header.shared_attributes.display_window,
+            pixel_aspect: match ratio.is_finite() && ratio > 0.0 {
+                true => ratio,
+                false => 1.0,
+            },
+        }
+    }
+}
 
 /// An operation over strips of rows. Implementations are pure: the output rows
 /// depend only on the input rows they are given.
@@ -46,10 +78,11 @@ pub trait Op: Send + Sync {
         Ok(())
     }
 
-    /// The output's display window given its inputs' (a resize's: the new
-    /// size), or `None`: the input's whose header the output keeps, as it
-    /// is. An error (a size the op cannot take) ends the frame.
-    fn display_window(&self, _inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+    /// The output's display window and pixel aspect ratio given its
+    /// inputs' (a resize's: the new size; a reformat's: the format's), or
+    /// `None`: the input's whose header the output keeps, as it is. An
+    /// error (a size the op cannot take) ends the frame.
+    fn display_window(&self, _inputs: &[Display]) -> Result<Option<Display>, String> {
         Ok(None)
     }
 
@@ -292,18 +325,20 @@ impl Graph {
     /// resize's scale) learns them here.
     pub fn display_windows(
         &self,
-        input: impl Fn(usize) -> IntegerBounds,
-    ) -> Vec<Result<(IntegerBounds, bool), String>> {
+        input: impl Fn(usize) -> Display,
+    ) -> Vec<Result<(Display, bool), String>> {
         self.evaluate(
             |i| Ok((input(i), false)),
-            |op, args: &[Result<(IntegerBounds, bool), String>]| {
-                let args: Vec<(IntegerBounds, bool)> =
-                    args.iter().cloned().collect::<Result<_, _>>()?;
-                let windows: Vec<IntegerBounds> = args.iter().map(|a| a.0).collect();
-                Ok(match op.display_window(&windows)? {
-                    Some(window) => (window, true),
+            |op, args: &[Result<(Display, bool), String>]| {
+                let args: Vec<(Display, bool)> = args.iter().cloned().collect::<Result<_, _>>()?;
+                let displays: Vec<Display> = args.iter().map(|a| a.0).collect();
+                Ok(match op.display_window(&displays)? {
+                    Some(display) => (display, true),
                     None => (
-                        windows.last().copied().unwrap_or(IntegerBounds::zero()),
+                        displays
+                            .last()
+                            .copied()
+                            .unwrap_or(Display::square(IntegerBounds::zero())),
                         args.iter().any(|a| a.1),
                     ),
                 })

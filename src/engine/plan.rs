@@ -2,7 +2,7 @@
 //! data window, the output header, and the strip height.
 
 use super::deep_input::DeepInput;
-use super::graph::{grow, intersection, union, Graph, Node};
+use super::graph::{grow, intersection, union, Display, Graph, Node};
 use super::luminance_chroma;
 use super::region::Regions;
 use crate::error::{Error, Kind, Result};
@@ -418,7 +418,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     }
     // Display windows first: an op whose geometry follows them (a resize's
     // scale) learns them before it is asked for data windows and regions.
-    let displays = graph.display_windows(|i| header_of(i).shared_attributes.display_window);
+    let displays = graph.display_windows(|i| Display::of(header_of(i)));
     let (display, resized) = displays[graph.output()].clone().map_err(located)?;
     let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
     let mut windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
@@ -473,7 +473,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
     if resized {
-        header.shared_attributes.display_window = display;
+        header.shared_attributes.display_window = display.window;
+        header.shared_attributes.pixel_aspect = display.pixel_aspect;
     }
     header.deep = false;
     header.deep_data_version = None;

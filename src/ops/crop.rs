@@ -9,7 +9,7 @@
 //! specs/ops.md, "crop, pad".
 
 use super::declare::{input, params, Args, Length, Operation, Value};
-use crate::engine::graph::{intersection, moved, Carried, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{intersection, moved, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::OnceLock;
@@ -238,11 +238,15 @@ impl Crop {
 }
 
 impl Op for Crop {
-    fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+    fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
+        let shown = |window| Display {
+            window,
+            pixel_aspect: inputs[0].pixel_aspect,
+        };
         if let Window::Place(format, center) = self.window {
             // The image's display window's corner to the format's, or its
             // centre to the format's centre (whole pixels, as oiiotool's --fit).
-            let d = inputs[0];
+            let d = inputs[0].window;
             let (ox, oy) = match center {
                 true => (
                     (format.size.width() as i32 - d.size.width() as i32) / 2,
@@ -261,12 +265,12 @@ impl Op for Crop {
                         .into(),
                 );
             }
-            return Ok(Some(format));
+            return Ok(Some(shown(format)));
         }
         let (dx, dy) = self.shift();
         Ok(self
             .display
-            .then(|| moved(self.window.of(inputs[0]), (-dx, -dy))))
+            .then(|| shown(moved(self.window.of(inputs[0].window), (-dx, -dy)))))
     }
 
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {

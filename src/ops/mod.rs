@@ -110,7 +110,11 @@ mod tests {
         assert_eq!(scaled("crop", "region", "41x30+3-5", 0.5), "1,-3,21,12");
         assert_eq!(scaled("pad", "by", "1,2,3,4", 0.5), "1,1,2,2");
         assert_eq!(scaled("resize", "size", "1920x1081", 0.5), "960x541");
-        assert_eq!(scaled("reformat", "format", "HD_1080", 0.25), "480x270");
+        assert_eq!(scaled("reformat", "format", "HD_1080", 0.25), "480x270:1");
+        assert_eq!(
+            scaled("reformat", "format", "2K_Cinemascope", 0.5),
+            "914x778:2"
+        );
         assert_eq!(scaled("transform", "translate", "3,-1", 0.5), "1.5,-0.5");
     }
 

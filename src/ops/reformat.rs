@@ -1,9 +1,11 @@
 //! `reformat`: an image into a format, as Nuke's Reformat: resized to the
 //! format's width or height (aspect kept), to fit inside it or fill it, or
 //! distorted to it (`resize`'s passes), then placed at the format's corner or
-//! centred (`crop`'s placement); the display window is the format. At scale
-//! 1 the image is copied and moved, so its chunks pass through. Formats by
-//! Nuke's names or WxH. Rules: specs/ops.md, "reformat".
+//! centred (`crop`'s placement); the display window is the format, and the
+//! pixel aspect ratio the format's (the picture keeps its shape across
+//! them). At scale 1 the image is copied and moved, so its chunks pass
+//! through. Formats by Nuke's names or WxH[:RATIO]. Rules: specs/ops.md,
+//! "reformat".
 
 use super::crop::Crop;
 use super::declare::{input, params, Args, Length, Operation, Value};
@@ -28,7 +30,8 @@ pub const REFORMAT: Operation = Operation {
 
 params! {
     pub struct Params {
-        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH pixels.
+        /// A format by Nuke's name (HD_1080, UHD_4K, 2K_DCP, 4K_DCP...) or WxH pixels,
+        /// square or of a pixel aspect ratio after a colon (1828x1556:2).
         format: Format {pixels},
         /// width, height (aspect kept), fit (inside), fill (covering) or distort.
         fit: Fit = "width",
@@ -40,8 +43,7 @@ params! {
 }
 
 /// Nuke's built-in formats: name, width, height and pixel aspect ratio
-/// (sources: specs/ops.md, "reformat"). The ratio is not applied to the
-/// resize nor written to the header (`--attrib pixelAspectRatio=R` writes it).
+/// (sources: specs/ops.md, "reformat").
 pub const FORMATS: &[(&str, usize, usize, f32)] = &[
     ("PC_Video", 640, 480, 1.0),
     ("NTSC", 720, 486, 0.91),
@@ -67,40 +69,60 @@ pub const FORMATS: &[(&str, usize, usize, f32)] = &[
     ("square_2K", 2048, 2048, 1.0),
 ];
 
-/// A format's size: a name from `FORMATS` (any case) or WxH.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Format(pub Size);
+/// A format: a name from `FORMATS` (any case), or WxH with square pixels
+/// or `WxH:RATIO`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Format {
+    pub size: Size,
+    pub pixel_aspect: f32,
+}
 
 impl Value for Format {
     fn parse(text: &str) -> Result<Self, String> {
         let named = FORMATS
             .iter()
             .find(|f| f.0.eq_ignore_ascii_case(text.trim()));
-        match named {
-            Some(&(_, width, height, _)) => Ok(Format(Size { width, height })),
-            None => Size::parse(text).map(Format).map_err(|_| {
+        if let Some(&(_, width, height, pixel_aspect)) = named {
+            let size = Size { width, height };
+            return Ok(Format { size, pixel_aspect });
+        }
+        let (size, ratio) = text.split_once(':').unwrap_or((text, "1"));
+        let pixel_aspect = ratio
+            .trim()
+            .parse::<f32>()
+            .ok()
+            .filter(|r| (0.01..=100.0).contains(r));
+        match (Size::parse(size), pixel_aspect) {
+            (Ok(size), Some(pixel_aspect)) => Ok(Format { size, pixel_aspect }),
+            (Ok(_), None) => Err(format!(
+                "format '{text}': the pixel aspect ratio after ':' must be a number from 0.01 \
+                 to 100 (1828x1556:2)"
+            )),
+            (Err(_), _) => {
                 let names: Vec<&str> = FORMATS.iter().map(|f| f.0).collect();
-                format!(
-                    "unknown format '{text}': expected WxH or one of {}",
+                Err(format!(
+                    "unknown format '{text}': expected WxH, WxH:RATIO or one of {}",
                     names.join(", ")
-                )
-            }),
+                ))
+            }
         }
     }
 }
 
-/// A named format's size scaled as a WxH one.
+/// A format's size scaled as a WxH one, its ratio kept.
 impl Length for Format {
     fn scaled(text: &str, factor: f64) -> Result<String, String> {
-        let Format(size) = Format::parse(text)?;
-        Size::scaled(&format!("{}x{}", size.width, size.height), factor)
+        let Format { size, pixel_aspect } = Format::parse(text)?;
+        let size = Size::scaled(&format!("{}x{}", size.width, size.height), factor)?;
+        Ok(format!("{size}:{pixel_aspect}"))
     }
 }
 
 fn build(args: &Args, graph: &mut GraphBuilder, inputs: &[NodeId]) -> Result<NodeId, String> {
     let p = Params::read(args)?;
-    let size = p.format.0;
-    let resized = passes(Target::Fit(size, p.fit), p.filter, inputs[0], graph);
+    let Format { size, pixel_aspect } = p.format;
+    let target = Target::Fit(size, pixel_aspect, p.fit);
+    let resized = passes(target, p.filter, inputs[0], graph);
     let format = IntegerBounds::new((0, 0), (size.width, size.height));
     Ok(graph.add(Crop::place(format, p.center), &[resized]))
 }
@@ -111,22 +133,26 @@ mod tests {
 
     #[test]
     fn formats_by_name_or_size() {
-        let size = |w, h| {
-            Ok(Format(Size {
-                width: w,
-                height: h,
-            }))
+        let format = |width, height, pixel_aspect| {
+            Ok(Format {
+                size: Size { width, height },
+                pixel_aspect,
+            })
         };
-        assert_eq!(Format::parse("2K_DCP"), size(2048, 1080));
-        assert_eq!(Format::parse("uhd_4k"), size(3840, 2160));
-        assert_eq!(Format::parse("1000x500"), size(1000, 500));
+        assert_eq!(Format::parse("2K_DCP"), format(2048, 1080, 1.0));
+        assert_eq!(Format::parse("uhd_4k"), format(3840, 2160, 1.0));
+        assert_eq!(Format::parse("1000x500"), format(1000, 500, 1.0));
+        assert_eq!(Format::parse("1828x1556:2"), format(1828, 1556, 2.0));
         assert!(Format::parse("HD_1081").unwrap_err().contains("HD_1080"));
-        assert_eq!(Format::parse("hd"), size(1920, 1080));
-        assert_eq!(Format::parse("2K_Cinemascope"), size(1828, 1556));
-        assert_eq!(Format::parse("PAL_16:9"), size(720, 576));
+        for bad in ["1000x500:0", "1000x500:x", "1000x500:1e9"] {
+            assert!(Format::parse(bad).unwrap_err().contains("0.01"), "{bad}");
+        }
+        assert_eq!(Format::parse("hd"), format(1920, 1080, 1.0));
+        assert_eq!(Format::parse("2K_Cinemascope"), format(1828, 1556, 2.0));
+        assert_eq!(Format::parse("PAL_16:9"), format(720, 576, 1.46));
         // Nuke's ratios, as its Python guide prints them (0.91, 1.09) and
         // its anamorphic formats have them.
-        let ratio = |name: &str| FORMATS.iter().find(|f| f.0 == name).unwrap().3;
+        let ratio = |name: &str| Format::parse(name).unwrap().pixel_aspect;
         assert_eq!(
             [
                 "NTSC",
@@ -138,6 +164,11 @@ mod tests {
             ]
             .map(ratio),
             [0.91, 1.09, 1.21, 1.46, 2.0, 1.0]
+        );
+        // Under a proxy, a named format is scaled with its ratio kept.
+        assert_eq!(
+            Format::scaled("2K_Cinemascope", 0.5).as_deref(),
+            Ok("914x778:2")
         );
     }
 }

@@ -8,7 +8,7 @@
 
 use super::crop::copy_moved;
 use super::declare::{choice, input, params, Args, Length, Operation, Value};
-use crate::engine::graph::{Carried, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{Carried, Display, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
@@ -90,12 +90,13 @@ impl Length for Size {
     }
 }
 
-/// The new size: given, the old one scaled, or fitted to a format.
+/// The new size: given, the old one scaled, or fitted to a format (of
+/// this size and pixel aspect ratio).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Target {
     Size(Size),
     Scale(f32),
-    Fit(Size, Fit),
+    Fit(Size, f32, Fit),
 }
 
 /// How an image is fitted to a format (Nuke's Reformat resize types).
@@ -127,9 +128,10 @@ impl Value for Fit {
 }
 
 impl Target {
-    /// The new length along `axis` of an image whose display window is `old`.
-    fn length(self, axis: Axis, old: IntegerBounds) -> usize {
-        let (w, h) = (old.size.width() as f64, old.size.height() as f64);
+    /// The new length along `axis` of an image shown as `old`.
+    fn length(self, axis: Axis, old: Display) -> usize {
+        let size = old.window.size;
+        let (w, h) = (size.width() as f64, size.height() as f64);
         let side = match axis {
             Axis::X => w,
             Axis::Y => h,
@@ -137,18 +139,38 @@ impl Target {
         let scale = match self {
             Target::Size(s) => return [s.width, s.height][(axis == Axis::Y) as usize],
             Target::Scale(f) => f as f64,
-            Target::Fit(format, fit) => {
+            Target::Fit(format, pixel_aspect, fit) => {
+                // The picture keeps its shape, as in Nuke's Reformat: the
+                // height is scaled by the width's scale times the format's
+                // pixel aspect over the image's (an anamorphic 2:1 plate
+                // into square pixels: half as much).
+                let squeeze = pixel_aspect as f64 / old.pixel_aspect as f64;
                 let (sx, sy) = (format.width as f64 / w, format.height as f64 / h);
-                match fit {
+                let across = match fit {
                     Fit::Width => sx,
-                    Fit::Height => sy,
-                    Fit::Inside => sx.min(sy),
-                    Fit::Fill => sx.max(sy),
-                    Fit::Distort => [sx, sy][(axis == Axis::Y) as usize],
+                    Fit::Height => sy / squeeze,
+                    Fit::Inside => sx.min(sy / squeeze),
+                    Fit::Fill => sx.max(sy / squeeze),
+                    Fit::Distort => {
+                        return [format.width, format.height][(axis == Axis::Y) as usize]
+                    }
+                };
+                match axis {
+                    Axis::X => across,
+                    Axis::Y => across * squeeze,
                 }
             }
         };
         ((side * scale).round() as usize).max(1)
+    }
+
+    /// The pixel aspect ratio of an image shown with `old`'s once resized:
+    /// a format's own, else kept.
+    fn pixel_aspect(self, old: f32) -> f32 {
+        match self {
+            Target::Fit(_, pixel_aspect, _) => pixel_aspect,
+            Target::Size(_) | Target::Scale(_) => old,
+        }
     }
 }
 
@@ -378,16 +400,16 @@ impl Pass {
 }
 
 impl Op for Pass {
-    fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
+    fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
         // The length from the original's display window (the vertical
         // pass's second input: the first's is already resized across).
-        let display = inputs[0];
+        let display = inputs[0].window;
         let from = self.axis.range(display);
         let original = inputs[inputs.len() - 1];
         let length = self.target.length(self.axis, original);
         let copies = [Axis::X, Axis::Y]
             .iter()
-            .all(|&a| self.target.length(a, original) == a.range(original).len());
+            .all(|&a| self.target.length(a, original) == a.range(original.window).len());
         let new = Geometry::new(from, length, self.filter, copies);
         let first = self.geometry.get_or_init(|| new.clone());
         if *first != new {
@@ -399,7 +421,10 @@ impl Op for Pass {
                 first.from.len()
             ));
         }
-        Ok(Some(self.axis.with(display, first.to.clone())))
+        Ok(Some(Display {
+            window: self.axis.with(display, first.to.clone()),
+            pixel_aspect: self.target.pixel_aspect(original.pixel_aspect),
+        }))
     }
 
     fn data_window(&self, inputs: &[IntegerBounds]) -> IntegerBounds {
@@ -571,5 +596,49 @@ mod tests {
                 "{bad}"
             );
         }
+    }
+
+    /// The sizes a fit gives, worked by hand from the rule (specs/ops.md,
+    /// "reformat"): the picture's shape, width x pixel aspect over height,
+    /// is kept but by distort.
+    #[test]
+    fn a_fit_keeps_the_pictures_shape_across_pixel_aspect_ratios() {
+        let shown = |w, h, pixel_aspect| Display {
+            window: IntegerBounds::new((0, 0), (w, h)),
+            pixel_aspect,
+        };
+        let fit = |old: Display, (w, h, r): (usize, usize, f32), fit| {
+            let target = Target::Fit(
+                Size {
+                    width: w,
+                    height: h,
+                },
+                r,
+                fit,
+            );
+            (
+                target.length(Axis::X, old),
+                target.length(Axis::Y, old),
+                target.pixel_aspect(old.pixel_aspect),
+            )
+        };
+        let anamorphic = shown(1828, 1556, 2.0);
+        let hd = (1920, 1080, 1.0);
+        // 1920 / 1828 across; down, that times 1 / 2: 1556 x 0.5252 = 817.2.
+        assert_eq!(fit(anamorphic, hd, Fit::Width), (1920, 817, 1.0));
+        // 1080 / 1556 down; across, that times 2: 1828 x 1.3882 = 2537.6.
+        assert_eq!(fit(anamorphic, hd, Fit::Height), (2538, 1080, 1.0));
+        assert_eq!(fit(anamorphic, hd, Fit::Inside), (1920, 817, 1.0));
+        assert_eq!(fit(anamorphic, hd, Fit::Fill), (2538, 1080, 1.0));
+        assert_eq!(fit(anamorphic, hd, Fit::Distort), (1920, 1080, 1.0));
+        // Square pixels into an anamorphic format: squeezed across.
+        let square = shown(3656, 1556, 1.0);
+        let scope = (1828, 1556, 2.0);
+        assert_eq!(fit(square, scope, Fit::Height), (1828, 1556, 2.0));
+        // The same ratio on both sides: as square pixels (1.0 to 1.0).
+        let pal = shown(720, 576, 1.09);
+        assert_eq!(fit(pal, (360, 400, 1.09), Fit::Inside), (360, 288, 1.09));
+        // A plain resize keeps the ratio.
+        assert_eq!(Target::Scale(0.5).pixel_aspect(2.0), 2.0);
     }
 }

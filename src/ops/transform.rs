@@ -9,7 +9,7 @@
 
 use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::Filter;
-use crate::engine::graph::{union, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{union, Display, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::{Bound, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -287,8 +287,8 @@ fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
 }
 
 impl Op for Transform {
-    fn display_window(&self, inputs: &[IntegerBounds]) -> Result<Option<IntegerBounds>, String> {
-        let display = inputs[0];
+    fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
+        let display = inputs[0].window;
         let forward = self.params.affine(display);
         let first = self
             .maps
@@ -496,7 +496,7 @@ mod tests {
     /// every output row computed at once from every input row.
     fn run(values: &[(&'static str, &str)], input: &Rows) -> Rows {
         let op = Transform::new(params(values));
-        assert_eq!(op.display_window(&[input.valid]), Ok(None));
+        assert_eq!(op.display_window(&[Display::square(input.valid)]), Ok(None));
         let window = op.data_window(&[input.valid]);
         let mut out = Rows::zeros(
             window.position.x(),
@@ -640,7 +640,7 @@ mod tests {
         ];
         let whole = run(&values, &input);
         let op = Transform::new(params(&values));
-        op.display_window(&[input.valid]).unwrap();
+        op.display_window(&[Display::square(input.valid)]).unwrap();
         let window = op.data_window(&[input.valid]);
         for top in [window.position.y(), window.position.y() + 11] {
             let rows = top..top + 5;
@@ -671,7 +671,7 @@ mod tests {
         let height = |h: usize| {
             let op = Transform::new(params(&[("rotate", "2")]));
             let input = IntegerBounds::new((0, 0), (4096, h));
-            op.display_window(&[input]).unwrap();
+            op.display_window(&[Display::square(input)]).unwrap();
             let window = op.data_window(&[input]);
             let middle = window.position.y() + window.size.height() as i32 / 2;
             op.request(crate::engine::region::rows_of(

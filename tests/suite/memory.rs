@@ -69,14 +69,7 @@ fn peak_rss(dir: &Path, command: &[&str], inputs: &[&str], frames: &str) -> u64 
 
 /// The memory bound `--dry-run` gives, in bytes.
 fn bound(dir: &Path, command: &[&str], inputs: &[&str], frames: &str) -> u64 {
-    let said = stderr(&run_in(dir, command, inputs, frames, "--dry-run"));
-    let mib: u64 = said
-        .split("holding at most ")
-        .nth(1)
-        .and_then(|rest| rest.split(' ').next())
-        .and_then(|mib| mib.parse().ok())
-        .unwrap_or_else(|| panic!("no bound in {said}"));
-    mib << 20
+    memory_bound(&run_in(dir, command, inputs, frames, "--dry-run"))
 }
 
 /// A run (inputs and frames) and what it is, for messages.

@@ -813,6 +813,18 @@ pub fn assert_refused(op: &str, input: &Path, output: &Path, cases: &[(&[&str], 
 }
 
 /// Runs exrcomp with `args`, which must succeed.
+/// The memory bound a `--dry-run` said ("holding at most N MiB"), in bytes.
+pub fn memory_bound(dry_run: &Output) -> u64 {
+    let said = stderr(dry_run);
+    let mib: u64 = said
+        .split("holding at most ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|mib| mib.parse().ok())
+        .unwrap_or_else(|| panic!("no bound in {said}"));
+    mib << 20
+}
+
 pub fn ok(args: &[&str]) {
     let out = run(args);
     assert!(out.status.success(), "exrcomp {args:?}: {}", stderr(&out));
