@@ -677,8 +677,13 @@ pub(crate) fn run_job(
     }
     if !summary.failed.is_empty() {
         let frames: Vec<i64> = summary.failed.iter().map(|(f, _)| *f).collect();
+        // A bug outranks bad input: it is the one to report.
+        let kind = match summary.failed.iter().any(|(_, e)| e.kind == Kind::Internal) {
+            true => Kind::Internal,
+            false => Kind::Input,
+        };
         return Err(Error::new(
-            Kind::Input,
+            kind,
             format!(
                 "{} failed: {}",
                 count(frames.len(), "frame"),
@@ -705,7 +710,7 @@ fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
         ));
     }
     match summary.failed.first() {
-        Some((frame, message)) => Err(Error::new(Kind::Input, format!("slate {frame}: {message}"))),
+        Some((frame, e)) => Err(Error::new(e.kind, format!("slate {frame}: {e}"))),
         None => Ok(()),
     }
 }
@@ -864,14 +869,16 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     }
 
     fn failed(&self, frame: i64, error: &Error) {
+        let mut summary = self.summary.lock().expect("not poisoned");
+        // Two stages can each fail the same frame (a later one first,
+        // before the earlier meets its own error); the first counts.
+        if summary.failed.iter().any(|(f, _)| *f == frame) {
+            return;
+        }
         let label = (self.frame_label)(frame).map_or(String::new(), |f| format!(" {f}"));
         self.report
             .note(&format!("exrcomp: frame{label} failed, going on: {error}"));
-        self.summary
-            .lock()
-            .expect("not poisoned")
-            .failed
-            .push((frame, error.message.clone()));
+        summary.failed.push((frame, error.clone()));
         self.report.frame_done();
     }
 }

@@ -11,7 +11,7 @@ pub enum Kind {
     Input,
     /// An output could not be written.
     Output,
-    /// A bug: an invariant of exrcomp itself broke.
+    /// A bug: an invariant of exrcomp itself broke, or it panicked.
     Internal,
     /// A pipeline stage stopped because another one failed; that one reports.
     Stopped,
@@ -71,6 +71,16 @@ impl Error {
     /// An output problem, naming the file and, for sequences, the frame.
     pub fn output(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> Self {
         Self::new(Kind::Output, located(path, frame, message))
+    }
+
+    /// A panic (`guard::Panic`: its message and place), said as a bug to
+    /// report; naming the output file and frame when a frame's work met it.
+    pub fn panicked(output: Option<(&Path, Option<i64>)>, panic: impl fmt::Display) -> Self {
+        let message = format!("internal error: {panic} (a bug: please report it with this line)");
+        Self::internal(match output {
+            Some((path, frame)) => located(path, frame, message),
+            None => message,
+        })
     }
 }
 

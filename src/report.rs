@@ -1,6 +1,7 @@
 //! Progress on the terminal and the summary at the end of a run.
 
 use crate::engine::stage_time::{self, StageTimes};
+use crate::error::Error;
 use crate::io::sequence::format_frame_list;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
 use std::time::{Duration, Instant};
@@ -21,8 +22,9 @@ pub struct Summary {
     pub seconds: f64,
     /// Frames whose complete output was kept (--resume).
     pub kept: Vec<i64>,
-    /// Frames that failed on bad input (--keep-going), with the reason.
-    pub failed: Vec<(i64, String)>,
+    /// Frames that failed on bad input or a bug (--keep-going), with the
+    /// error.
+    pub failed: Vec<(i64, Error)>,
     /// Output frames left out for a missing input (--missing skip).
     pub skipped: Vec<i64>,
     /// Frames the range named (with those skipped); 0: as many as written.
@@ -103,7 +105,7 @@ impl Report {
             let failed: Vec<_> = summary
                 .failed
                 .iter()
-                .map(|(frame, reason)| serde_json::json!({"frame": frame, "error": reason}))
+                .map(|(frame, e)| serde_json::json!({"frame": frame, "error": e.message}))
                 .collect();
             let record = serde_json::json!({
                 "frames": summary.frames,

@@ -12,6 +12,7 @@ use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
 use super::stage_time::{self, Stage, StageTimes};
 use super::strip::Rows;
 use crate::error::{Error, Kind, Result};
+use crate::guard;
 use crate::io::media::{self, Strip};
 use crate::io::reader::ExrFile;
 use crate::io::writer::write_file;
@@ -19,6 +20,7 @@ use crate::io::writer::IndexedChunk;
 use crossbeam_channel::{bounded, Receiver, Sender};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
+use std::path::Path;
 use std::sync::Arc;
 
 /// Strips a channel holds; with one strip being worked on at each end.
@@ -42,7 +44,8 @@ pub trait Events: Sync {
     fn written(&self, plan: &FramePlan);
     /// A frame's output already exists complete (--resume).
     fn kept(&self, frame: i64);
-    /// A frame failed on bad input and the run goes on (--keep-going).
+    /// A frame failed on bad input or a bug, and the run goes on
+    /// (--keep-going).
     fn failed(&self, frame: i64, error: &Error);
 }
 
@@ -79,10 +82,87 @@ fn receive<T>(stage: Stage, rx: &Receiver<Msg<T>>) -> Option<Msg<T>> {
     stage_time::wait(stage, || rx.recv().ok())
 }
 
+/// `receive`, past the rest of a frame that `failed` in this stage
+/// (`abandon`); cleared at the next frame.
+fn receive_past<T>(stage: Stage, rx: &Receiver<Msg<T>>, failed: &mut bool) -> Option<Msg<T>> {
+    loop {
+        let msg = receive(stage, rx)?;
+        *failed &= !matches!(msg, Msg::Begin(_));
+        if !*failed {
+            return Some(msg);
+        }
+    }
+}
+
 /// Sends downstream from `stage`; false once the downstream stage has
 /// stopped (it failed, and reports why).
 fn send<T>(stage: Stage, tx: &Sender<Msg<T>>, msg: Msg<T>) -> bool {
     stage_time::wait(stage, || tx.send(msg).is_ok())
+}
+
+/// Runs `work`, part of the frame written to `output` (`label`: its number
+/// in messages). A panic in it, on this thread or in the pool tasks it
+/// waits on, is a bug met in that frame: the frame's error, as bad input
+/// would be, not the end of the process.
+fn frame_work<T>(output: &Path, label: Option<i64>, work: impl FnOnce() -> Result<T>) -> Result<T> {
+    guard::catch(work).unwrap_or_else(|p| Err(Error::panicked(Some((output, label)), p)))
+}
+
+/// Whether a frame's error abandons that frame alone: with --keep-going,
+/// bad input or a bug met in its work; an output error would repeat on
+/// every frame.
+fn goes_on(job: &Job, e: &Error) -> bool {
+    job.keep_going && matches!(e.kind, Kind::Input | Kind::Internal)
+}
+
+/// A frame that failed in `stage`, after decode: under `goes_on` it is
+/// reported, abandoned downstream (`Ok(false)` when downstream has
+/// stopped), and its messages still coming are dropped (`failed`);
+/// otherwise its error ends the run.
+fn abandon<T>(
+    job: &Job,
+    events: &impl Events,
+    (stage, tx): (Stage, &Sender<Msg<T>>),
+    frame: i64,
+    e: Error,
+    failed: &mut bool,
+) -> Result<bool> {
+    if !goes_on(job, &e) {
+        return Err(e);
+    }
+    events.failed(frame, &e);
+    *failed = true;
+    Ok(send(stage, tx, Msg::Abort))
+}
+
+/// Test builds only (debug assertions, as the suite's binary is built):
+/// `EXRCOMP_TEST_PANIC=STAGE:FRAME` (decode, compose, encode or write)
+/// panics in that stage's work on that frame. No input makes exrcomp panic
+/// on purpose, and the tests must see a bug met in one frame cost that
+/// frame alone (tests/suite/overnight.rs). The panic's place is the call's.
+#[track_caller]
+fn planted_panic(stage: Stage, frame: i64) {
+    if !cfg!(debug_assertions) {
+        return;
+    }
+    static PLANTED: std::sync::OnceLock<Option<(String, i64)>> = std::sync::OnceLock::new();
+    let planted = PLANTED.get_or_init(|| {
+        let planted = std::env::var("EXRCOMP_TEST_PANIC").ok()?;
+        let (stage, frame) = planted.split_once(':')?;
+        Some((stage.to_string(), frame.parse().ok()?))
+    });
+    if planted.as_ref() == Some(&(stage.name().to_string(), frame)) {
+        panic!("planted panic in {} of frame {frame}", stage.name());
+    }
+}
+
+/// Runs `body` as `stage`'s thread. Each frame's work is caught on its own
+/// (`frame_work`); a panic outside it, in the hand-over between frames,
+/// ends the run as an internal error, in one line.
+fn stage_thread(stage: Stage, body: impl FnOnce() -> Result<()>) -> Result<()> {
+    stage_time::stage_thread(stage, || {
+        guard::catch(body).unwrap_or_else(|p| Err(Error::panicked(None, p)))
+    })
 }
 
 /// Runs `job`, reporting each frame to `events`, and returns where its CPU
@@ -95,22 +175,18 @@ pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
     let (encoded_tx, encoded_rx) = bounded::<Msg<Encoded>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
+            scope.spawn(|| stage_thread(Stage::Decode, || decode_stage(job, events, decoded_tx))),
             scope.spawn(|| {
-                stage_time::stage_thread(Stage::Decode, || decode_stage(job, events, decoded_tx))
-            }),
-            scope.spawn(|| {
-                stage_time::stage_thread(Stage::Compose, || {
-                    compose_stage(job, decoded_rx, composed_tx)
+                stage_thread(Stage::Compose, || {
+                    compose_stage(job, events, decoded_rx, composed_tx)
                 })
             }),
             scope.spawn(|| {
-                stage_time::stage_thread(Stage::Encode, || {
-                    encode_stage(job, composed_rx, encoded_tx)
+                stage_thread(Stage::Encode, || {
+                    encode_stage(job, events, composed_rx, encoded_tx)
                 })
             }),
-            scope.spawn(|| {
-                stage_time::stage_thread(Stage::Write, || write_stage(job, encoded_rx, events))
-            }),
+            scope.spawn(|| stage_thread(Stage::Write, || write_stage(job, encoded_rx, events))),
         ];
         stages.map(|stage| {
             stage
@@ -133,7 +209,13 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
             continue;
         }
         let mut begun = false;
-        match decode_frame(job, sources, &tx, &mut begun) {
+        let (output, label) = (
+            job.output.path(sources.frame),
+            job.frame_label(sources.frame),
+        );
+        match frame_work(&output, label, || {
+            decode_frame(job, sources, &tx, &mut begun)
+        }) {
             Ok(true) => {}
             // Downstream has stopped (and reports why) or we were interrupted.
             Ok(false) => {
@@ -142,7 +224,7 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
                 }
                 return Ok(());
             }
-            Err(e) if job.keep_going && e.kind == Kind::Input => {
+            Err(e) if goes_on(job, &e) => {
                 if begun && !send(Stage::Decode, &tx, Msg::Abort) {
                     return Ok(());
                 }
@@ -237,9 +319,12 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
             })
             .collect();
         // On a pool thread, as the compose stage's strips are.
-        let (strips, passed) = rayon::scope(|_| match &pass {
-            Some(pass) => pass.decode(plan, &job.graph, &mut cursors, &regions, rows.clone()),
-            None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
+        let (strips, passed) = rayon::scope(|_| {
+            planted_panic(Stage::Decode, plan.frame);
+            match &pass {
+                Some(pass) => pass.decode(plan, &job.graph, &mut cursors, &regions, rows.clone()),
+                None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
+            }
         })?;
         let decoded = Decoded {
             rows,
@@ -265,18 +350,24 @@ fn output_complete(job: &Job, path: &std::path::Path) -> bool {
         .is_ok()
 }
 
-fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>>) -> Result<()> {
+fn compose_stage(
+    job: &Job,
+    events: &impl Events,
+    rx: Receiver<Msg<Decoded>>,
+    tx: Sender<Msg<Composed>>,
+) -> Result<()> {
     let mut composer = None;
     // Passed chunks wait here until their rows come out of the graph.
     let mut passed: Vec<IndexedChunk> = Vec::new();
     // The output's block rows and blocks per row.
     let (mut lines, mut across) = (1, 1);
-    let mut frame = 0;
+    let mut current: Option<Arc<FramePlan>> = None;
     let mut written = IntegerBounds::zero();
-    while let Some(msg) = receive(Stage::Compose, &rx) {
+    let mut failed = false;
+    while let Some(msg) = receive_past(Stage::Compose, &rx, &mut failed) {
         let out = match msg {
             Msg::Begin(ref plan) | Msg::Part(ref plan) => {
-                frame = plan.frame;
+                current = Some(plan.clone());
                 written = plan.window();
                 let grid = output_grid(&plan.header);
                 (lines, across) = (grid.block.y(), grid.blocks.x());
@@ -291,14 +382,21 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                 relay(&msg, plan.clone())
             }
             Msg::Strip(decoded) => {
-                let composer = composer
-                    .as_mut()
-                    .ok_or_else(|| Error::internal("strip before frame"))?;
+                let (Some(plan), Some(composer)) = (&current, composer.as_mut()) else {
+                    return Err(Error::internal("strip before frame"));
+                };
                 passed.extend(decoded.passed);
-                // On a pool thread: each node's bands then run as nested
-                // tasks, not as one call into the pool per node from here.
-                let (rows, strips) = (decoded.rows, decoded.strips);
-                match rayon::scope(|_| composer.push(frame, rows, strips)) {
+                let (rows, strips, frame) = (decoded.rows, decoded.strips, plan.frame);
+                let pushed = frame_work(&plan.output, plan.label, || {
+                    // On a pool thread: each node's bands then run as nested
+                    // tasks, not as one call into the pool per node from here.
+                    rayon::scope(|_| {
+                        planted_panic(Stage::Compose, frame);
+                        composer.push(frame, rows, strips)
+                    })
+                    .map_err(|m| Error::new(Kind::Input, format!("frame {frame}: {m}")))
+                });
+                match pushed {
                     Ok(Some(rows)) => match written_rows(rows, written) {
                         Some(rows) => {
                             let top = written.position.y();
@@ -313,7 +411,12 @@ fn compose_stage(job: &Job, rx: Receiver<Msg<Decoded>>, tx: Sender<Msg<Composed>
                         None => continue,
                     },
                     Ok(None) => continue,
-                    Err(m) => return Err(Error::new(Kind::Input, format!("frame {frame}: {m}"))),
+                    Err(e) => {
+                        match abandon(job, events, (Stage::Compose, &tx), frame, e, &mut failed)? {
+                            true => continue,
+                            false => break,
+                        }
+                    }
                 }
             }
             Msg::End => Msg::End,
@@ -347,11 +450,17 @@ fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
     Some(rows.copy_region(top..bottom, columns))
 }
 
-fn encode_stage(job: &Job, rx: Receiver<Msg<Composed>>, tx: Sender<Msg<Encoded>>) -> Result<()> {
+fn encode_stage(
+    job: &Job,
+    events: &impl Events,
+    rx: Receiver<Msg<Composed>>,
+    tx: Sender<Msg<Encoded>>,
+) -> Result<()> {
     let mut plan: Option<Arc<FramePlan>> = None;
     // A review frame's burn-in, placed.
     let mut label = None;
-    while let Some(msg) = receive(Stage::Encode, &rx) {
+    let mut failed = false;
+    while let Some(msg) = receive_past(Stage::Encode, &rx, &mut failed) {
         let out = match msg {
             Msg::Begin(ref p) | Msg::Part(ref p) => {
                 plan = Some(p.clone());
@@ -362,19 +471,32 @@ fn encode_stage(job: &Job, rx: Receiver<Msg<Composed>>, tx: Sender<Msg<Encoded>>
                 let plan = plan
                     .as_ref()
                     .ok_or_else(|| Error::internal("strip before frame"))?;
-                Msg::Strip(match &job.media {
-                    Some(review) => Encoded::Media(review.media.convert(
-                        &composed.rows,
-                        plan.header.data_window(),
-                        label.as_ref(),
-                    )),
-                    None => Encoded::Chunks(encode_rows(
-                        &composed.rows,
-                        &plan.header,
-                        job.zip_level,
-                        composed.passed,
-                    )?),
-                })
+                let encoded = frame_work(&plan.output, plan.label, || {
+                    planted_panic(Stage::Encode, plan.frame);
+                    Ok(match &job.media {
+                        Some(review) => Encoded::Media(review.media.convert(
+                            &composed.rows,
+                            plan.header.data_window(),
+                            label.as_ref(),
+                        )),
+                        None => Encoded::Chunks(encode_rows(
+                            &composed.rows,
+                            &plan.header,
+                            job.zip_level,
+                            composed.passed,
+                        )?),
+                    })
+                });
+                match encoded {
+                    Ok(encoded) => Msg::Strip(encoded),
+                    Err(e) => {
+                        let tx = (Stage::Encode, &tx);
+                        match abandon(job, events, tx, plan.frame, e, &mut failed)? {
+                            true => continue,
+                            false => break,
+                        }
+                    }
+                }
             }
             Msg::End => Msg::End,
             Msg::Abort => Msg::Abort,
@@ -387,7 +509,10 @@ fn encode_stage(job: &Job, rx: Receiver<Msg<Composed>>, tx: Sender<Msg<Encoded>>
 }
 
 fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> Result<()> {
-    while let Some(msg) = receive(Stage::Write, &rx) {
+    // A frame failed here (--keep-going): its messages still coming are
+    // dropped.
+    let mut failed = false;
+    while let Some(msg) = receive_past(Stage::Write, &rx, &mut failed) {
         let plan = match msg {
             Msg::Begin(plan) => plan,
             Msg::Abort => continue,
@@ -396,6 +521,7 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
         let mut abandoned = false;
         // The writer tells a frame's parts apart by their chunk counts.
         let mut next = || loop {
+            planted_panic(Stage::Write, plan.frame);
             return match receive(Stage::Write, &rx) {
                 Some(Msg::Strip(encoded)) => Ok(Some(encoded)),
                 Some(Msg::Part(_)) => continue,
@@ -408,7 +534,7 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
                 None => Err(Error::stopped()),
             };
         };
-        let written = match &job.media {
+        let written = frame_work(&plan.output, plan.label, || match &job.media {
             Some(review) => {
                 let window = plan.header.data_window();
                 let size = (window.size.width(), window.size.height());
@@ -434,13 +560,18 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
                 };
                 write_file(&plan.output, plan.label, plan.output_parts(), chunks)
             }
-        };
+        });
         match written {
             Ok(()) => events.written(&plan),
             // The temporary file is gone; an abandoned frame is reported upstream.
             Err(e) if e.kind == Kind::Stopped && abandoned => continue,
             // An earlier stage failed and reports why.
             Err(e) if e.kind == Kind::Stopped => return Ok(()),
+            // Its temporary file is gone too.
+            Err(e) if goes_on(job, &e) => {
+                events.failed(plan.frame, &e);
+                failed = true;
+            }
             Err(e) => return Err(e),
         }
     }

@@ -268,10 +268,10 @@ impl<'f> Batches<'f> {
         stage_time::wait(Stage::Write, || self.slots.0.send(()))
             .map_err(|_| std::io::Error::other("the writer's slots closed"))?;
         scope.spawn(move |_| {
+            let _slot = Slot(&self.slots.1);
             if let Err(e) = stage_time::task(Stage::Write, || self.write(&batch, at)) {
                 self.lock().get_or_insert(e);
             }
-            let _ = self.slots.1.recv();
         });
         Ok(())
     }
@@ -316,6 +316,16 @@ impl<'f> Batches<'f> {
     }
 }
 
+/// A batch's slot, freed when its task ends, even by a panic (which reaches
+/// the writer once the scope ends): a slot lost would stall the writer.
+struct Slot<'a>(&'a Receiver<()>);
+
+impl Drop for Slot<'_> {
+    fn drop(&mut self) {
+        let _ = self.0.recv();
+    }
+}
+
 /// The bytes `chunk` takes in a file of `parts` parts.
 fn chunk_size(chunk: &Chunk, parts: usize) -> u64 {
     let part = if parts > 1 { 4 } else { 0 };
@@ -350,23 +360,39 @@ pub fn write_in_place(
 
 /// Creates `path`'s folder, runs `write` on the file at `path`'s
 /// temporary name, then syncs it to disk and renames it into place; on any
-/// error the temporary file is removed and the error returned as it is.
+/// error, or a panic, the temporary file is removed (and the error returned
+/// as it is).
 fn place(path: &Path, frame: Option<i64>, write: impl FnOnce(&File) -> Result<()>) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         fs::create_dir_all(dir).map_err(|e| fail(&format!("cannot create folder: {e}")))?;
     }
-    let temporary = temporary_path(path);
-    let result = (|| {
-        let file = create_locked(&temporary).map_err(|e| fail(&format!("cannot create: {e}")))?;
-        write(&file)?;
-        file.sync_all().map_err(|e| fail(&e))?;
-        fs::rename(&temporary, path).map_err(|e| fail(&format!("cannot rename into place: {e}")))
-    })();
-    if result.is_err() {
-        let _ = fs::remove_file(&temporary);
+    let mut temporary = Temporary {
+        path: temporary_path(path),
+        placed: false,
+    };
+    let file = create_locked(&temporary.path).map_err(|e| fail(&format!("cannot create: {e}")))?;
+    write(&file)?;
+    file.sync_all().map_err(|e| fail(&e))?;
+    fs::rename(&temporary.path, path)
+        .map_err(|e| fail(&format!("cannot rename into place: {e}")))?;
+    temporary.placed = true;
+    Ok(())
+}
+
+/// A temporary file, removed when dropped before it is renamed into place
+/// (on an error, or a panic, while it is written).
+struct Temporary {
+    path: PathBuf,
+    placed: bool,
+}
+
+impl Drop for Temporary {
+    fn drop(&mut self) {
+        if !self.placed {
+            let _ = fs::remove_file(&self.path);
+        }
     }
-    result
 }
 
 /// The magic number, version and flags, and each header's attributes
@@ -446,4 +472,39 @@ fn write_key_code(name: &[u8], code: &KeyCode, bytes: &mut Vec<u8>) {
     fields
         .iter()
         .for_each(|f| bytes.extend_from_slice(&f.to_le_bytes()));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exr::block::chunk::CompressedScanLineBlock;
+    use std::time::Duration;
+
+    #[test]
+    fn a_batch_whose_write_panics_frees_its_slot_and_the_panic_reaches_the_writer() {
+        let (done, ended) = crossbeam_channel::bounded(1);
+        std::thread::spawn(move || {
+            let file = tempfile::tempfile().unwrap();
+            let batches = Batches::new(&file, 1);
+            // A second part's chunk in a one-part file: the crate asserts.
+            let bad = || Chunk {
+                layer_index: 1,
+                compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
+                    y_coordinate: 0,
+                    compressed_pixels_le: vec![0; 8],
+                }),
+            };
+            let caught = crate::guard::catch(|| {
+                rayon::in_place_scope(|scope| {
+                    for _ in 0..2 * IN_FLIGHT {
+                        batches.spawn(scope, vec![bad()], 0).unwrap();
+                    }
+                })
+            });
+            let _ = done.send(caught.map_err(|p| p.message));
+        });
+        let caught = ended.recv_timeout(Duration::from_secs(20));
+        let message = caught.expect("the writer stalled").unwrap_err();
+        assert!(message.contains("invalid header index"), "{message}");
+    }
 }

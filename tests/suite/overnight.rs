@@ -159,6 +159,91 @@ fn keep_going_reports_bad_frames_and_writes_the_rest() {
     assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
 }
 
+/// A bug met in one frame (a panic planted with the test builds'
+/// `EXRCOMP_TEST_PANIC=STAGE:FRAME`, on a pool thread for decode and
+/// compose, on the stage's own thread for encode and write) costs that
+/// frame alone: the run says so in one line naming the frame, its output
+/// and the panic's place, not in Rust's words; it exits 1, within a time
+/// limit (every thread and channel shut down), leaving no temporary file.
+/// Under --keep-going the other frames are written, byte for byte as
+/// without the bug; without it, the frames before stay and nothing else
+/// is written.
+#[test]
+fn a_panic_in_one_frame_is_that_frames_error_and_keep_going_writes_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "fg", 1..=5, 0);
+    write_sequence(d, "bg", 1..=5, 100);
+    let over = |out: &Path, panic: Option<String>, keep_going: bool| {
+        let mut command = exrcomp();
+        // Three strips a frame: the failed frame's later ones still come.
+        command
+            .args(["over", s(&d.join("fg.####.exr")), s(&d.join("bg.####.exr"))])
+            .args(["-o", s(&out.join("c.####.exr")), "--strip-rows", "16"])
+            .args(keep_going.then_some("--keep-going"))
+            .env_remove("RUST_BACKTRACE");
+        if let Some(panic) = &panic {
+            command.env("EXRCOMP_TEST_PANIC", panic);
+        }
+        let ended = within(command, Duration::from_secs(60));
+        assert!(!ended.timed_out, "{panic:?} hung: {}", ended.stderr);
+        ended
+    };
+    let clean = d.join("clean");
+    let ended = over(&clean, None, false);
+    assert_eq!(ended.code, Some(0), "{}", ended.stderr);
+    for stage in ["decode", "compose", "encode", "write"] {
+        for keep_going in [false, true] {
+            let o = d.join(format!("{stage}-{keep_going}"));
+            let ended = over(&o, Some(format!("{stage}:3")), keep_going);
+            let case = format!("{stage}, keep going {keep_going}: {}", ended.stderr);
+            assert_eq!(ended.code, Some(1), "{case}");
+            let said = format!(
+                "{} (frame 3): internal error: planted panic in {stage} of frame 3 \
+                 at src/engine/pipeline.rs:",
+                s(&frame_path(&o, "c", 3))
+            );
+            let lines: Vec<&str> = ended
+                .stderr
+                .lines()
+                .filter(|l| l.contains("internal error"))
+                .collect();
+            assert!(!lines.is_empty(), "{case}");
+            for line in lines {
+                assert!(line.contains(&said), "{case}");
+                assert!(line.ends_with(" (a bug: please report it with this line)"));
+            }
+            for rust in ["panicked at", "RUST_BACKTRACE", "stack backtrace"] {
+                assert!(!ended.stderr.contains(rust), "{case}");
+            }
+            if keep_going {
+                assert!(
+                    ended
+                        .stderr
+                        .ends_with("exrcomp: error: 1 frame failed: 3\n"),
+                    "{case}"
+                );
+            }
+            let written: &[i64] = if keep_going { &[1, 2, 4, 5] } else { &[1, 2] };
+            let mut names: Vec<String> = std::fs::read_dir(&o)
+                .unwrap()
+                .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect();
+            names.sort();
+            let expected: Vec<String> = written.iter().map(|f| format!("c.{f:04}.exr")).collect();
+            assert_eq!(names, expected, "{case}");
+            for &f in written {
+                let (got, clean) = (frame_path(&o, "c", f), frame_path(&clean, "c", f));
+                let same = std::fs::read(got).unwrap() == std::fs::read(clean).unwrap();
+                assert!(
+                    same,
+                    "frame {f} differs from the run without the bug: {case}"
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn resume_redoes_only_missing_or_damaged_outputs() {
     let dir = tempfile::tempdir().unwrap();

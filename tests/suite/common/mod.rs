@@ -9,7 +9,7 @@ use half::f16;
 use std::collections::{BTreeMap, BTreeSet};
 use std::io::{Read, Seek, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Output};
 use std::sync::{Mutex, Once};
 use std::time::{Duration, Instant};
 
@@ -57,7 +57,7 @@ fn limited_command(args: &[&str]) -> Command {
     command
 }
 
-/// How a `limited_within` run ended.
+/// How a `within` run ended.
 pub struct Ended {
     /// The exit code; `None` when a signal ended it or it was killed.
     pub code: Option<i32>,
@@ -65,18 +65,25 @@ pub struct Ended {
     pub signal: Option<i32>,
     /// Killed for running past its time.
     pub timed_out: bool,
+    pub stdout: String,
     pub stderr: String,
 }
 
-/// `limited`, killed after `timeout`. Standard error goes to a file, so that
-/// a long message (a backtrace) cannot block the child on a full pipe.
+/// `limited`, killed after `timeout`.
 pub fn limited_within(args: &[&str], timeout: Duration) -> Ended {
-    let mut log = tempfile::tempfile().expect("temporary file");
-    let mut child = limited_command(args)
-        .stdout(Stdio::null())
-        .stderr(log.try_clone().expect("file handle"))
+    within(limited_command(args), timeout)
+}
+
+/// Runs `command`, killed after `timeout`. Its output goes to files, so
+/// that a long message (a backtrace) cannot block it on a full pipe.
+pub fn within(mut command: Command, timeout: Duration) -> Ended {
+    let log = || tempfile::tempfile().expect("temporary file");
+    let (mut out, mut err) = (log(), log());
+    let mut child = command
+        .stdout(out.try_clone().expect("file handle"))
+        .stderr(err.try_clone().expect("file handle"))
         .spawn()
-        .expect("sh runs");
+        .expect("the command starts");
     let started = Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().expect("child waited for") {
@@ -89,14 +96,18 @@ pub fn limited_within(args: &[&str], timeout: Duration) -> Ended {
         }
         std::thread::sleep(Duration::from_millis(5));
     };
-    let mut stderr = String::new();
-    log.rewind().expect("rewind");
-    let _ = log.read_to_string(&mut stderr);
+    let read = |log: &mut std::fs::File| {
+        let mut text = String::new();
+        log.rewind().expect("rewind");
+        let _ = log.read_to_string(&mut text);
+        text
+    };
     Ended {
         code: status.and_then(|s| s.code()),
         signal: status.and_then(|s| std::os::unix::process::ExitStatusExt::signal(&s)),
         timed_out: status.is_none(),
-        stderr,
+        stdout: read(&mut out),
+        stderr: read(&mut err),
     }
 }
 
