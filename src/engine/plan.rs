@@ -543,6 +543,41 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             .collect(),
         None => Vec::new(),
     };
+    // OpenEXR requires every part of a file to share its display window and
+    // pixel aspect ratio (ImfMultiPartOutputFile refuses the file else): a
+    // geometry op on one part cannot leave the others as they are.
+    if let Some(i) = carried {
+        let shown = |h: &Header| {
+            let a = &h.shared_attributes;
+            (a.display_window, a.pixel_aspect.to_bits())
+        };
+        let mismatch = (carried_headers.iter().enumerate())
+            .find(|&(p, h)| p != parts[i] && shown(h) != shown(&header));
+        if let Some((_, other)) = mismatch {
+            let describe = |h: &Header| {
+                let (w, a) = (
+                    h.shared_attributes.display_window,
+                    h.shared_attributes.pixel_aspect,
+                );
+                let end = w.end();
+                let (x1, y1) = (end.x() - 1, end.y() - 1);
+                format!(
+                    "({} {}) - ({x1} {y1}) at pixel aspect {a}",
+                    w.position.x(),
+                    w.position.y()
+                )
+            };
+            return Err(Error::usage(format!(
+                "frame {frame}: {} has {} parts, which OpenEXR requires to share one display \
+                 window and pixel aspect ratio: the result's, {}, is not its other parts', {}: \
+                 give --all-parts to apply the operations to every part",
+                inputs[i].path.display(),
+                carried_headers.len(),
+                describe(&header),
+                describe(other),
+            )));
+        }
+    }
     if let (OutputBlocks::Tiles(_), Some(_)) = (job.blocks, job.rows) {
         return Err(Error::usage(
             "--rows writes bands of scanline files only (stitch joins scanline blocks): drop --tile",

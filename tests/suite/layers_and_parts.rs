@@ -611,3 +611,75 @@ fn a_jobs_part_index_and_the_dry_runs_part() {
         assert!(listing.contains(listed), "{args:?}: {listing}");
     }
 }
+
+/// OpenEXR requires every part of a file to share its display window and
+/// pixel aspect ratio: a geometry operation on one part of a multi-part file
+/// is refused, naming the file and what to give, nothing written (it wrote a
+/// file OpenEXR refuses, exit 0); `--all-parts` applies it to every part,
+/// and what keeps the display window still carries the other parts.
+#[test]
+fn a_geometry_change_to_one_part_of_many_is_refused_or_made_to_every_part() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let beauty = random_rgba(82, 0, 0, 24, 16, Kind::Half, true);
+    let mut depth = beauty.clone();
+    depth.channels.retain(|name, _| name == "Z");
+    let input = d.join("render.exr");
+    write_parts(
+        &input,
+        &[("beauty", "main", &beauty), ("depth", "main", &depth)],
+    );
+    let out_dir = d.join("out");
+    std::fs::create_dir(&out_dir).unwrap();
+    let output = out_dir.join("o.exr");
+    let depth_part = format!("{}:depth", s(&input));
+    let refused: [&[&str]; 5] = [
+        &["resize", s(&input), "--scale", "0.5"],
+        &["resize", &depth_part, "--scale", "0.5"],
+        &["reformat", s(&input), "--format", "2K_Cinemascope"],
+        &["crop", s(&input), "--region", "8x8+0+0", "--cut"],
+        &["transcode", s(&input), "--proxy-scale", "0.5"],
+    ];
+    for args in refused {
+        let out = run(&[args, &["-o", s(&output)]].concat());
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {message}");
+        assert!(
+            message.contains("render.exr has 2 parts") && message.contains("--all-parts"),
+            "{args:?}: {message}"
+        );
+        assert_eq!(message.lines().count(), 1, "{message}");
+        assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 0);
+    }
+    let windows = |path: &Path| -> Vec<_> {
+        let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+        let shown = |h: &exr::meta::header::Header| {
+            let a = &h.shared_attributes;
+            (a.display_window, a.pixel_aspect)
+        };
+        meta.headers.iter().map(shown).collect()
+    };
+    for args in [
+        &["resize", s(&input), "--scale", "0.5", "--all-parts"][..],
+        &[
+            "reformat",
+            s(&input),
+            "--format",
+            "2K_Cinemascope",
+            "--all-parts",
+        ],
+        &["grade", s(&input), "--gain", "2"],
+    ] {
+        ok(&[args, &["-o", s(&output), "-q"]].concat());
+        let shown = windows(&output);
+        assert_eq!(shown.len(), 2, "{args:?}");
+        assert_eq!(shown[0], shown[1], "{args:?}");
+        if let Some(oiiotool) = peer("oiiotool") {
+            succeed(
+                std::process::Command::new(oiiotool)
+                    .arg("--stats")
+                    .arg(&output),
+            );
+        }
+    }
+}
