@@ -216,6 +216,34 @@ impl<'a> PlaneMut<'a> {
         self.reborrow().into_bytes(range)
     }
 
+    /// Sets each sample of `range` to `from`'s sample at the next index of
+    /// `at`, bit for bit, or to zero where it has none: resampling by the
+    /// nearest sample (transform, resize), which must not round through
+    /// f32 (u32 ids past 2^24, NaN payloads, -0.0).
+    pub fn gather(
+        &mut self,
+        range: Range<usize>,
+        from: &Samples,
+        at: impl IntoIterator<Item = Option<usize>>,
+    ) {
+        fn copy<T: Copy + Default>(
+            to: &mut [T],
+            from: &[T],
+            at: impl Iterator<Item = Option<usize>>,
+        ) {
+            for (to, i) in to.iter_mut().zip(at) {
+                *to = i.map_or_else(T::default, |i| from[i]);
+            }
+        }
+        let at = at.into_iter();
+        match (self, from) {
+            (PlaneMut::F16(to), Samples::F16(from)) => copy(&mut to[range], from, at),
+            (PlaneMut::F32(to), Samples::F32(from)) => copy(&mut to[range], from, at),
+            (PlaneMut::U32(to), Samples::U32(from)) => copy(&mut to[range], from, at),
+            _ => panic!("gathering samples of another type"),
+        }
+    }
+
     fn into_bytes(self, range: Range<usize>) -> &'a mut [u8] {
         match self {
             PlaneMut::F16(v) => bytemuck::cast_slice_mut(&mut v[range]),

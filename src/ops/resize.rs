@@ -4,6 +4,7 @@
 //! each streaming its input in a region of its own (`Op::request`), so the
 //! vertical pass holds a few rows of the horizontal one, never the image.
 //! At the same size the samples are copied, as oiiotool keeps the image.
+//! u32 channels (ids) take the nearest sample on both passes, as they are.
 //! Formulas: specs/ops.md, "resize".
 
 use super::crop::copy_moved;
@@ -174,6 +175,14 @@ impl Target {
     }
 }
 
+/// Whether channels of type `kind` are resampled by their nearest sample,
+/// not filtered (resize and transform): u32 ones, object ids, which a
+/// weighted sum would turn into other objects' ids (or none), and which f32
+/// cannot hold past 2^24.
+pub fn nearest_only(kind: SampleType) -> bool {
+    kind == SampleType::U32
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Filter {
     Box,
@@ -316,15 +325,26 @@ impl Geometry {
         }
     }
 
-    /// The first source pixel of output pixel `x`, and its 2R + 1 weights
-    /// (normalised), as OpenImageIO computes them in f32.
-    fn taps(&self, filter: Filter, x: i32, weights: &mut Vec<f32>) -> i32 {
+    /// Where output pixel `x`'s centre falls in the source, as OpenImageIO
+    /// computes it in f32.
+    fn source_point(&self, x: i32) -> f32 {
         let (f0, flen) = (
             self.from.start as f32,
             (self.from.end - self.from.start) as f32,
         );
         let (t0, tlen) = (self.to.start as f32, (self.to.end - self.to.start) as f32);
-        let s = f0 + (x as f32 - t0 + 0.5) * (1.0 / tlen) * flen;
+        f0 + (x as f32 - t0 + 0.5) * (1.0 / tlen) * flen
+    }
+
+    /// The source pixel holding output pixel `x`'s centre (its middle tap).
+    fn nearest(&self, x: i32) -> i32 {
+        self.source_point(x).floor() as i32
+    }
+
+    /// The first source pixel of output pixel `x`, and its 2R + 1 weights
+    /// (normalised), as OpenImageIO computes them in f32.
+    fn taps(&self, filter: Filter, x: i32, weights: &mut Vec<f32>) -> i32 {
+        let s = self.source_point(x);
         let floor = s.floor();
         let frac = s - floor;
         weights.clear();
@@ -363,7 +383,8 @@ impl Geometry {
 }
 
 /// One pass: along `axis`, every channel, as f32 (X) or the original
-/// input's types (Y, whose second input is the original).
+/// input's types (Y, whose second input is the original); u32 channels
+/// (`nearest_only`) stay u32 on both.
 pub struct Pass {
     axis: Axis,
     target: Target,
@@ -447,8 +468,8 @@ impl Op for Pass {
 
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         let sample_type = |c: &ChannelDescription| match self.axis {
-            Axis::X => SampleType::F32,
-            Axis::Y => c.sample_type,
+            Axis::X if !nearest_only(c.sample_type) => SampleType::F32,
+            _ => c.sample_type,
         };
         inputs[inputs.len() - 1]
             .iter()
@@ -520,13 +541,29 @@ impl Pass {
         if columns.is_empty() || data.is_empty() {
             return;
         }
-        let taps = self.taps_across(input, out, columns.clone(), data);
+        let taps = self.taps_across(input, out, columns.clone(), data.clone());
+        let geometry = self.geometry();
+        let (lo, hi) = (data.start as i32, data.end as i32 - 1);
+        let nearest: Vec<usize> = columns
+            .clone()
+            .map(|c| (geometry.nearest(out.x + c as i32) - input.x).clamp(lo, hi) as usize)
+            .collect();
         let mut row = vec![0.0f32; input.width];
         let mut values = vec![0.0f32; columns.len()];
         for y in out.valid_rows() {
             let range = out.row_range(y);
             for (c, plane) in out.planes.iter_mut().enumerate() {
-                input.planes[c].read_f32(input.row_range(y), &mut row);
+                let (source, start) = (&input.planes[c], input.row_range(y).start);
+                if nearest_only(source.kind()) {
+                    let at = nearest.iter().map(|&i| Some(start + i));
+                    plane.gather(
+                        range.start + columns.start..range.start + columns.end,
+                        source,
+                        at,
+                    );
+                    continue;
+                }
+                source.read_f32(input.row_range(y), &mut row);
                 for (v, (at, w)) in values.iter_mut().zip(taps.iter()) {
                     *v = at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum();
                 }
@@ -555,9 +592,17 @@ impl Pass {
         for y in out.valid_rows() {
             let first = geometry.taps(self.filter, y, &mut weights);
             let range = out.row_range(y);
+            let to = range.start + columns.start..range.start + columns.end;
             for (c, plane) in out.planes.iter_mut().enumerate() {
-                let Samples::F32(source) = &across.planes[c] else {
-                    unreachable!("the first pass writes f32")
+                let source = match &across.planes[c] {
+                    Samples::F32(source) => source,
+                    // u32, nearest across: the nearest row.
+                    ids => {
+                        let from = geometry.nearest(y).clamp(rows.start, rows.end - 1);
+                        let line = across.row_range(from).start + first_column;
+                        plane.gather(to.clone(), ids, (line..).map(Some));
+                        continue;
+                    }
                 };
                 sums.fill(0.0);
                 for (i, &w) in weights.iter().enumerate() {
@@ -568,10 +613,7 @@ impl Pass {
                         *sum += w * v;
                     }
                 }
-                plane.write_f32(
-                    range.start + columns.start..range.start + columns.end,
-                    &sums,
-                );
+                plane.write_f32(to.clone(), &sums);
             }
         }
     }

@@ -1,15 +1,20 @@
 //! `transform`: translate, rotate, scale and skew about a centre, and flip
 //! or flop, as Nuke's Transform (its knobs' values and senses: y up,
 //! degrees counter-clockwise), resampled by inverse mapping with a filter.
-//! The output's data window is the transformed input window's bounding box;
-//! the display window is kept. It streams: what it reads of its input
-//! (`Op::request`) is the inverse-mapped footprint of the output rows asked
-//! for, clipped to the input's data, plus the filter's radius. Formulas and
-//! memory: specs/ops.md, "transform".
+//! A map that puts every pixel centre on a pixel centre (whole-pixel moves,
+//! flips, quarter turns) moves the samples as they are, whatever the
+//! filter, and a whole-pixel move alone is a data window move whose blocks
+//! can be the input's chunks (`Op::carries`). u32 channels (ids) take the
+//! nearest sample. The output's data window is the transformed input
+//! window's bounding box; the display window is kept. It streams: what it
+//! reads of its input (`Op::request`) is the inverse-mapped footprint of the
+//! output rows asked for, clipped to the input's data, plus the filter's
+//! radius. Formulas and memory: specs/ops.md, "transform".
 
+use super::crop::copy_moved;
 use super::declare::{params, Args, Length, Operation, Value};
-use super::resize::Filter;
-use crate::engine::graph::{union, Display, GraphBuilder, NodeId, Op};
+use super::resize::{nearest_only, Filter};
+use crate::engine::graph::{union, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
 use crate::params::{Bound, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -117,6 +122,14 @@ impl Sampler {
     }
 }
 
+/// How far from the origin a pixel of OpenEXR's windows can be (their
+/// coordinates are within ±(2^30 - 1)).
+const FARTHEST: f64 = (1u64 << 30) as f64;
+
+/// How far a mapped point may be from a pixel edge (`covering`) or a map
+/// from its whole-pixel snap (`Affine::snapped`) and count as on it.
+const ON_PIXEL: f64 = 1e-6;
+
 /// x' = a x + b y + c, y' = d x + e y + f, in pixel coordinates (y down,
 /// pixel (i, j) covering [i, i + 1) x [j, j + 1)).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -126,6 +139,32 @@ impl Affine {
     pub fn apply(&self, x: f64, y: f64) -> (f64, f64) {
         let [a, b, c, d, e, f] = self.0;
         (a * x + b * y + c, d * x + e * y + f)
+    }
+
+    /// The map with whole entries, when it puts every pixel centre on a
+    /// pixel centre: its linear part a signed permutation (quarter turns,
+    /// mirrors) and its offsets whole (centre `i + 0.5` goes to
+    /// `±(i + 0.5) + c`). Taken when no point within OpenEXR's coordinates
+    /// lands more than `ON_PIXEL` from where the whole map puts it. Quarter
+    /// turns, mirrors and unit scales give exact entries (exact sines), so
+    /// the slack is for offsets rounded in the centre's arithmetic; a real
+    /// turn or scale, even by 1e-9, is far beyond it.
+    fn snapped(&self) -> Option<Affine> {
+        let whole = Affine(self.0.map(f64::round));
+        let [a, b, _, d, e, _] = whole.0;
+        let permutes = a.abs() + b.abs() == 1.0 && d.abs() + e.abs() == 1.0 && a.abs() != d.abs();
+        let off = |k: usize| (self.0[k] - whole.0[k]).abs();
+        let close = [0, 3]
+            .iter()
+            .all(|&row| FARTHEST * (off(row) + off(row + 1)) + off(row + 2) < ON_PIXEL);
+        (permutes && close).then_some(whole)
+    }
+
+    /// For a whole-pixel move alone (no turn or mirror): output pixel
+    /// (x, y) is input pixel (x + dx, y + dy) of this map, the inverse.
+    fn shift(&self) -> Option<(i32, i32)> {
+        let [a, b, c, d, e, f] = self.0;
+        ([a, b, d, e] == [1.0, 0.0, 0.0, 1.0]).then_some((c as i32, f as i32))
     }
 
     fn inverse(&self) -> Affine {
@@ -240,9 +279,8 @@ impl Params {
 
 pub struct Transform {
     params: Params,
-    /// The forward and inverse maps, from the first frame's display window
-    /// (a sequence keeps it).
-    maps: OnceLock<(IntegerBounds, Affine, Affine)>,
+    /// The maps, from the first frame's display window (a sequence keeps it).
+    maps: OnceLock<Maps>,
     /// The union of the input data windows seen so far: what a request is
     /// clipped to (a frame's is always in it by the time it is asked).
     data: Mutex<IntegerBounds>,
@@ -257,15 +295,38 @@ impl Transform {
         }
     }
 
-    fn maps(&self) -> &(IntegerBounds, Affine, Affine) {
+    fn maps(&self) -> &Maps {
         self.maps.get().expect("the display window comes first")
+    }
+}
+
+/// A display window's forward and inverse maps, snapped to whole pixels
+/// when they put pixel centres on pixel centres (`exact`).
+struct Maps {
+    display: IntegerBounds,
+    forward: Affine,
+    inverse: Affine,
+    exact: bool,
+}
+
+impl Maps {
+    fn new(display: IntegerBounds, params: &Params) -> Self {
+        let forward = params.affine(display);
+        let snapped = forward.snapped();
+        let forward = snapped.unwrap_or(forward);
+        Maps {
+            display,
+            forward,
+            inverse: forward.inverse(),
+            exact: snapped.is_some(),
+        }
     }
 }
 
 /// Whole pixels covering `[x0, y0, x1, y1]`, grown by `by` on each side;
 /// within a millionth of a pixel edge counts as on it.
 fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
-    let snap = |v: f64| match (v - v.round()).abs() < 1e-6 {
+    let snap = |v: f64| match (v - v.round()).abs() < ON_PIXEL {
         true => v.round(),
         false => v,
     };
@@ -289,11 +350,8 @@ fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
 impl Op for Transform {
     fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
         let display = inputs[0].window;
-        let forward = self.params.affine(display);
-        let first = self
-            .maps
-            .get_or_init(|| (display, forward, forward.inverse()));
-        if first.0 != display {
+        let first = self.maps.get_or_init(|| Maps::new(display, &self.params));
+        if first.display != display {
             return Err(
                 "transform: the display window changed within the sequence: transform one \
                  size at a time"
@@ -309,28 +367,45 @@ impl Op for Transform {
         }
         let mut seen = self.data.lock().expect("not poisoned");
         *seen = union(*seen, inputs[0]);
-        covering(self.maps().1.bounds(inputs[0], None), 0.0)
+        covering(self.maps().forward.bounds(inputs[0], None), 0.0)
     }
 
     fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
-        let Some((_, _, inverse)) = self.maps.get() else {
+        let Some(maps) = self.maps.get() else {
             // Asked before any frame (whether it resamples): it does.
             return Some(out);
         };
         let data = *self.data.lock().expect("not poisoned");
-        Some(covering(
-            inverse.bounds(out, Some(data)),
-            self.params.filter.reach(),
-        ))
+        // An exact map reads the pixels it moves, no taps around them.
+        let reach = match maps.exact {
+            true => 0.0,
+            false => self.params.filter.reach(),
+        };
+        Some(covering(maps.inverse.bounds(out, Some(data)), reach))
     }
 
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         inputs[0].to_vec()
     }
 
+    /// A whole-pixel move alone: the input's samples, moved.
+    fn carries(&self, inputs: &[&[ChannelDescription]]) -> Option<Carried> {
+        let maps = self.maps.get().filter(|m| m.exact)?;
+        Some(Carried {
+            input: 0,
+            channels: (0..inputs[0].len()).collect(),
+            shift: maps.inverse.shift()?,
+        })
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
-        let inverse = self.maps().2;
+        let maps = self.maps();
+        if let Some(shift) = maps.inverse.shift().filter(|_| maps.exact) {
+            copy_moved(input, out, shift);
+            return Ok(());
+        }
+        let inverse = maps.inverse;
         // The source pixels there are: held and inside the data window.
         let have = crate::engine::graph::intersection(
             input.valid,
@@ -341,28 +416,48 @@ impl Op for Transform {
             return Ok(());
         }
         let taps = Taps {
-            sampler: self.params.filter,
             lo: (have.position.x(), have.position.y()),
             hi: (have.end().x(), have.end().y()),
         };
+        // The filter, unless the map is exact or the sampler impulse: then
+        // every channel takes its nearest sample, as u32 ones always do.
+        let filter = match self.params.filter {
+            Sampler::Filter(f) if !maps.exact => Some(f),
+            _ => None,
+        };
+        let filtered: Vec<bool> = out
+            .channels
+            .iter()
+            .map(|c| filter.is_some() && !nearest_only(c.sample_type))
+            .collect();
+        let filter = filter.filter(|_| filtered.contains(&true));
+        let any_nearest = filtered.contains(&false);
         let mut values = vec![0.0f32; columns.len()];
-        let mut weights = Vec::with_capacity(columns.len());
+        let (mut weights, mut nearest) = (Vec::new(), Vec::new());
         for y in out.valid_rows() {
             weights.clear();
+            nearest.clear();
             for c in columns.clone() {
                 let x = out.x + c as i32;
                 let (u, v) = inverse.apply(x as f64 + 0.5, y as f64 + 0.5);
-                weights.push(taps.at(u, v));
+                if let Some(f) = filter {
+                    weights.push(taps.at(f, u, v));
+                }
+                if any_nearest {
+                    nearest.push(taps.nearest(u, v, input));
+                }
             }
             let range = out.row_range(y);
-            for (plane, source) in out.planes.iter_mut().zip(&input.planes) {
+            let range = range.start + columns.start..range.start + columns.end;
+            for (k, (plane, source)) in out.planes.iter_mut().zip(&input.planes).enumerate() {
+                if !filtered[k] {
+                    plane.gather(range.clone(), source, nearest.iter().copied());
+                    continue;
+                }
                 for (value, w) in values.iter_mut().zip(&weights) {
                     *value = w.apply(source, input);
                 }
-                plane.write_f32(
-                    range.start + columns.start..range.start + columns.end,
-                    &values,
-                );
+                plane.write_f32(range.clone(), &values);
             }
         }
         Ok(())
@@ -372,10 +467,8 @@ impl Op for Transform {
 /// Most taps along one axis (lanczos3's six pixels and one).
 const MOST_TAPS: usize = 8;
 
-/// The source pixels `lo..hi` (held and inside the data) and how to sample
-/// between them.
+/// The source pixels `lo..hi`: held and inside the data.
 struct Taps {
-    sampler: Sampler,
     lo: (i32, i32),
     hi: (i32, i32),
 }
@@ -392,8 +485,17 @@ struct Weights {
 }
 
 impl Taps {
-    /// The taps of source point (u, v) (pixel coordinates).
-    fn at(&self, u: f64, v: f64) -> Weights {
+    /// The sample index in `rows` of the pixel holding source point (u, v)
+    /// (pixel coordinates), if it is one of the source pixels.
+    fn nearest(&self, u: f64, v: f64, rows: &Rows) -> Option<usize> {
+        let (x, y) = (u.floor(), v.floor());
+        let inside = |p: f64, lo: i32, hi: i32| p >= lo as f64 && p < hi as f64;
+        (inside(x, self.lo.0, self.hi.0) && inside(y, self.lo.1, self.hi.1))
+            .then(|| rows.row_range(y as i32).start + (x as i32 - rows.x) as usize)
+    }
+
+    /// The taps of `filter` at source point (u, v) (pixel coordinates).
+    fn at(&self, filter: Filter, u: f64, v: f64) -> Weights {
         let mut w = Weights {
             x: 0,
             y: 0,
@@ -401,15 +503,6 @@ impl Taps {
             wy: [0.0; MOST_TAPS],
             nx: 0,
             ny: 0,
-        };
-        let Sampler::Filter(filter) = self.sampler else {
-            let (x, y) = (u.floor(), v.floor());
-            let inside = |p: f64, lo: i32, hi: i32| p >= lo as f64 && p < hi as f64;
-            if inside(x, self.lo.0, self.hi.0) && inside(y, self.lo.1, self.hi.1) {
-                (w.x, w.y, w.nx, w.ny) = (x as i32, y as i32, 1, 1);
-                (w.wx[0], w.wy[0]) = (1.0, 1.0);
-            }
-            return w;
         };
         let width = filter.width();
         let radius = width as f64 / 2.0;
@@ -454,7 +547,7 @@ impl Weights {
             let line: f32 = match source {
                 Samples::F16(v) => dot(&self.wx[..self.nx], &v[start..], |s| s.to_f32()),
                 Samples::F32(v) => dot(&self.wx[..self.nx], &v[start..], |s| s),
-                Samples::U32(v) => dot(&self.wx[..self.nx], &v[start..], |s| s as f32),
+                Samples::U32(_) => unreachable!("u32 channels take the nearest sample"),
             };
             sum += wy * line;
         }
@@ -540,7 +633,7 @@ mod tests {
     }
 
     #[test]
-    fn quarter_and_half_turns_with_impulse_are_exact() {
+    fn quarter_and_half_turns_are_exact_whatever_the_filter() {
         let (w, h) = (6, 4);
         let input = source(w, h, &value);
         // Counter-clockwise about the centre (3, 2): the top row becomes
@@ -568,9 +661,10 @@ mod tests {
         each(&out, |x, y, v| {
             assert_eq!(v, value(x, 3 - y), "flip {x},{y}")
         });
+        // Whatever the filter: the samples are moved, not filtered.
         let out = run(&[("flop", "true"), ("filter", "lanczos3")], &input);
         each(&out, |x, y, v| {
-            assert!((v - value(5 - x, y)).abs() < 1e-4, "flop {x},{y}")
+            assert_eq!(v, value(5 - x, y), "flop {x},{y}")
         });
     }
 
@@ -685,6 +779,62 @@ mod tests {
         let (short, tall) = (height(1000), height(16000));
         assert_eq!(short, tall);
         assert!(short < 4096 / 20 + 10, "{short}");
+    }
+
+    #[test]
+    fn maps_that_put_centres_on_centres_are_snapped_and_no_others() {
+        let snapped = |values: &[(&'static str, &str)], (w, h)| {
+            let display = IntegerBounds::new((0, 0), (w, h));
+            params(values).affine(display).snapped()
+        };
+        for values in [
+            &[("translate", "3,-2")][..],
+            &[("rotate", "90")],
+            &[("rotate", "-90")],
+            &[("rotate", "180")],
+            &[("rotate", "270")],
+            &[("rotate", "450")],
+            &[("flip", "true")],
+            &[("flop", "true")],
+            &[("scale", "-1,1")],
+            &[("rotate", "90"), ("flip", "true"), ("translate", "-5,7")],
+            &[("translate", "3.0000000001,0")],
+        ] {
+            let exact = snapped(values, (6, 4));
+            assert!(
+                exact.is_some_and(|m| m.0.iter().all(|v| v.fract() == 0.0)),
+                "{values:?}"
+            );
+        }
+        // An offset rounded in the centre's arithmetic: 0.2 + 2.6 + 0.2.
+        let rounded = [
+            ("flop", "true"),
+            ("center", "0.2,0"),
+            ("translate", "2.6,0"),
+        ];
+        let display = IntegerBounds::new((0, 0), (6, 4));
+        assert_eq!(params(&rounded).affine(display).0[2], 3.0000000000000004);
+        assert_eq!(snapped(&rounded, (6, 4)).unwrap().0[2], 3.0);
+        for values in [
+            &[("translate", "0.5,0")][..],
+            &[("translate", "3.00001,0")],
+            &[("rotate", "1e-9")],
+            &[("rotate", "90.000001")],
+            &[("scale", "1.000000001")],
+            &[("scale", "2")],
+            &[("skew", "1e-12,0")],
+        ] {
+            assert_eq!(snapped(values, (6, 4)), None, "{values:?}");
+        }
+        // About the middle of a 5 x 4 frame a quarter turn lands centres on
+        // corners; a half turn does not.
+        assert_eq!(snapped(&[("rotate", "90")], (5, 4)), None);
+        assert!(snapped(&[("rotate", "180")], (5, 4)).is_some());
+        // A move alone: output pixel (x, y) is input pixel (x - 3, y - 2).
+        let moved = snapped(&[("translate", "3,-2")], (6, 4)).unwrap();
+        assert_eq!(moved.inverse().shift(), Some((-3, -2)));
+        let turned = snapped(&[("rotate", "180")], (6, 4)).unwrap();
+        assert_eq!(turned.inverse().shift(), None);
     }
 
     #[test]

@@ -42,3 +42,4 @@ mod stage_times;
 mod tiled;
 mod tiled_output;
 mod transform;
+mod transform_exact;

@@ -24,7 +24,7 @@ fn sources(out: &Path, input: &Path) -> Vec<Option<usize>> {
 
 /// Every chunk of `path` stores the block its place in the offset table
 /// says: a scanline block its first row, a tile its column and row.
-fn assert_placed(path: &Path) {
+pub fn assert_placed(path: &Path) {
     let file = ExrFile::open(path, None).unwrap();
     let header = file.header(0);
     let window = header.data_window();

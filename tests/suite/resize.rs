@@ -182,6 +182,57 @@ fn resize_equals_the_whole_image_reference_for_every_filter() {
     }
 }
 
+/// u32 channels (ids) are not filtered: along each axis output pixel `x`
+/// takes the source pixel holding `s = (x + 0.5) / L1 × L0` (f32, as the
+/// filters' centre), clamped to the data window, as it is (ids past 2^24
+/// too, which f32 cannot hold), shrinking and enlarging, whatever the strips.
+#[test]
+fn ids_take_the_nearest_sample_on_both_axes() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in.exr");
+    let mut img = random_rgba(8, 0, 0, 61, 47, Kind::Half, true);
+    img.display = (61, 47);
+    let Samples::U32(ids) = img.channels.get_mut("id").unwrap() else {
+        unreachable!()
+    };
+    // Odd ids past 2^24: every one changes through f32.
+    ids.iter_mut()
+        .for_each(|v| *v = (1 << 24) + (*v >> 8) * 2 + 1);
+    let ids = ids.clone();
+    write_image(
+        &input,
+        &img,
+        compression("zip"),
+        exr::meta::attribute::LineOrder::Increasing,
+    );
+    let nearest = |x: usize, from: usize, to: usize| {
+        let s = (x as f32 + 0.5) * (1.0 / to as f32) * from as f32;
+        (s.floor() as usize).min(from - 1)
+    };
+    for name in ["box", "lanczos3"] {
+        for (w, h) in [(23, 17), (97, 80), (29, 101)] {
+            for strip in ["1", "64"] {
+                let out = dir.path().join("out.exr");
+                let size = format!("{w}x{h}");
+                resize(
+                    &input,
+                    &out,
+                    &["--size", &size, "--filter", name, "--strip-rows", strip],
+                );
+                let got = read_image(&out);
+                let Samples::U32(got) = &got.channels["id"] else {
+                    panic!("id stays u32")
+                };
+                for (k, &id) in got.iter().enumerate() {
+                    let (x, y) = (nearest(k % w, 61, w), nearest(k / w, 47, h));
+                    assert_eq!(id, ids[y * 61 + x], "{name} {size}: ({}, {})", k % w, k / w);
+                }
+            }
+        }
+    }
+    assert_peers_read(&dir.path().join("out.exr"));
+}
+
 #[test]
 fn resize_by_a_scale_rounds_the_sides_and_the_job_node_agrees() {
     let dir = tempfile::tempdir().unwrap();
