@@ -371,14 +371,19 @@ impl Geometry {
         first..last + weights.len() as i32
     }
 
-    /// The pixels that data `data` covers once resized.
+    /// The pixels that data `data` covers once resized: its ends mapped,
+    /// floored and ceiled, in whole numbers (in floating point, 181 rows to
+    /// 91 mapped row 181 to 91.00000000000001, a row past the image).
     fn data(&self, data: Range<i32>) -> Range<i32> {
         if data.is_empty() {
             return 0..0;
         }
-        let scale = (self.to.end - self.to.start) as f64 / (self.from.end - self.from.start) as f64;
-        let map = |v: i32| self.to.start as f64 + (v - self.from.start) as f64 * scale;
-        map(data.start).floor() as i32..map(data.end).ceil() as i32
+        let (to, from) = (self.to.len() as i64, self.from.len() as i64);
+        let scaled = |v: i32| (v as i64 - self.from.start as i64) * to;
+        let start = scaled(data.start).div_euclid(from);
+        let end = -(-scaled(data.end)).div_euclid(from);
+        let at = |v: i64| (self.to.start as i64 + v).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+        at(start)..at(end)
     }
 }
 

@@ -472,6 +472,33 @@ fn reformat_places_the_resized_image_in_the_format() {
     );
 }
 
+/// A full-frame image stays full-frame at any scale: its data window's
+/// ends were mapped in floating point, and 9 of 98 heights and scales put
+/// one more row (or column) past the display window (181 rows at 0.5:
+/// data 0-91, display 0-90), which --proxy-scale passed on to PNGs and a
+/// reformat's placement.
+#[test]
+fn a_full_frame_image_stays_full_frame_at_any_scale() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in.exr");
+    let out = dir.path().join("out.exr");
+    for (size, scale) in [
+        ((16, 181), "0.5"),
+        ((16, 201), "0.5"),
+        ((16, 203), "0.5"),
+        ((16, 365), "0.5"),
+        ((16, 203), "0.3"),
+        ((16, 719), "0.7"),
+        ((16, 1083), "1.5"),
+        ((181, 8), "0.5"),
+    ] {
+        generate(&input, "bg", size, &[]);
+        ok(&["resize", s(&input), "-o", s(&out), "--scale", scale, "-q"]);
+        let (data, display) = windows(&out);
+        assert_eq!(data, display, "{size:?} at {scale}");
+    }
+}
+
 /// An anamorphic plate (pixels twice as wide as tall) reformatted to square
 /// pixels keeps its picture's shape, as Nuke's Reformat does: half the
 /// height's scale; the header takes the format's ratio.
