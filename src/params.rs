@@ -15,10 +15,13 @@ pub struct Bound {
 }
 
 impl Bound {
-    /// `value` if it is finite and within the bounds.
+    /// `value` if it is finite and within the bounds: the bounds as
+    /// written or as an f32 holds them (0.01 as f32 is 0.0099999998, and
+    /// `--proxy-scale 0.01` was refused as under 0.01).
     pub fn check<T: Into<f64> + Copy + Display>(&self, value: T) -> Result<T, String> {
         let v: f64 = value.into();
-        if v.is_finite() && (self.min..=self.max).contains(&v) {
+        let (min, max) = (self.min as f32 as f64, self.max as f32 as f64);
+        if v.is_finite() && (self.min.min(min)..=self.max.max(max)).contains(&v) {
             Ok(value)
         } else {
             Err(self.refusal(value))
@@ -56,6 +59,7 @@ pub const MIX: Bound = bound("mix", 0.0, 1.0);
 pub const RESIZE_SCALE: Bound = bound("scale", 1e-4, 1e4);
 pub const PROXY_SCALE: Bound = bound("proxy_scale", 0.01, 1.0);
 pub const TRANSLATE: Bound = bound("translate", -1048576.0, 1048576.0);
+pub const CENTER: Bound = bound("center", -1048576.0, 1048576.0);
 pub const ROTATE: Bound = bound("rotate", -1e6, 1e6);
 pub const TRANSFORM_SCALE: Bound = bound("scale", -1e4, 1e4);
 pub const SKEW: Bound = bound("skew", -100.0, 100.0);
@@ -122,6 +126,11 @@ mod tests {
         assert!(VBLUR_SCALE.check(f32::NAN).is_err());
         assert!(VBLUR_SCALE.check(f32::INFINITY).is_err());
         assert_eq!(VBLUR_SCALE.check(-2.0f32), Ok(-2.0));
+        // The bounds themselves, as an f32 holds them, are within.
+        assert_eq!(PROXY_SCALE.parse::<f32>("0.01"), Ok(0.01));
+        assert_eq!(RESIZE_SCALE.parse::<f32>("0.0001"), Ok(0.0001));
+        assert!(PROXY_SCALE.parse::<f32>("0.0099").is_err());
+        assert!(RESIZE_SCALE.parse::<f64>("0.000099999").is_err());
         let message = DISPARITY.parse::<f32>("1e30").unwrap_err();
         assert!(
             message.contains("disparity must be a number from"),

@@ -16,7 +16,7 @@ use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::{nearest_only, Filter};
 use crate::engine::graph::{union, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::engine::strip::{Rows, RowsMut, Samples};
-use crate::params::{Bound, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
+use crate::params::{Bound, CENTER, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::{Mutex, OnceLock};
 
@@ -42,7 +42,7 @@ params! {
         /// X,Y: x moves by X times y, then y by Y times x (about the centre, y up).
         skew: Pair [SKEW] = "0,0",
         /// The centre X,Y in pixels from the display window's bottom left corner, y up (default its middle).
-        center: Option<Pair> [TRANSLATE] {pixels},
+        center: Option<Pair> [CENTER] {pixels},
         /// Mirror top to bottom about the centre (oiiotool's --flip).
         flip: bool,
         /// Mirror left to right about the centre (oiiotool's --flop).
