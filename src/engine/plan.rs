@@ -725,7 +725,8 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
              composited, would take {smallest} bytes, over the {MAX_STRIP_BYTES}-byte limit \
              (is a data window damaged? a turn near 90 or 270 degrees holds its whole \
-             input)",
+             input, and a resize that shrinks the height many times over holds as many \
+             input rows per output row: resize in steps)",
             window.size.width(),
             window.size.height(),
         );
