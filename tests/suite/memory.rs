@@ -141,6 +141,23 @@ fn a_flip_peak_memory_does_not_grow_with_height() {
     );
 }
 
+/// A resize 32 times wider and 32 times shorter: its horizontal pass holds
+/// 8192 columns of f32 across some 600 input rows (a strip's span), 94 MiB.
+/// Grown by a Vec's doubling, that window took twice the rows, its old
+/// buffer left in the heap: a peak of 180 MiB against a bound of 126.
+#[test]
+fn a_resize_enlarging_across_while_shrinking_down_peaks_under_its_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "n", "bg", 256, 4096, "1");
+    let resize = ["resize", "--size", "8192x128", "--filter", "gaussian"];
+    let inputs = ["n.####.exr"];
+    let bound = bound(d, &resize, &inputs, "1");
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let peak = peak_runs(d, &resize, &inputs, "1", 2, true);
+    assert!(peak <= bound, "peak {peak} B over the bound {bound} B");
+}
+
 #[test]
 fn peak_memory_does_not_grow_with_frames() {
     let dir = tempfile::tempdir().unwrap();
