@@ -23,9 +23,13 @@ const PROGRAM: u64 = 10 << 20;
 /// resamples), `R_i` the width an input is decoded over (its data window
 /// read: none for a black input) and `S_i` its node's span, and `B` the
 /// batches of chunks the writer lets wait (`writer::IN_FLIGHT`), each with
-/// its bytes laid out.
+/// its bytes laid out. An input read whole (its span its whole region: a
+/// turn near 90 degrees, readers that disagree) is decoded once, its first
+/// term `(S_i + 2 L_i + S_i + 2 min(T L_i, S_i + 2 L_i)) R_i b_i` and no
+/// strip in the channel, `T` the threads.
 pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
+    let threads = rayon::current_num_threads() as u64;
     let spans = spanned_rows(graph, &plan.regions, plan.computed, plan.strip_rows);
     let bytes = |channels: &[exr::meta::attribute::ChannelDescription]| {
         channels
@@ -38,7 +42,19 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
             let row = plan.read[i].size.width() as u64 * bytes(&plan.header_of(i).channels.list);
             let rows = graph.input_node(i).map_or(s, |n| spans[n] as u64);
             let lines = plan.levels[i].block.y() as u64;
-            row * (3 * (rows + 2 * lines) + 2 * rows)
+            let whole = !plan.regions.shared()
+                && graph
+                    .input_node(i)
+                    .is_some_and(|n| spans[n] >= plan.regions.rect(n).size.height());
+            match whole {
+                // Decoded once: its chunks and the strip built of them, and
+                // a chunk's bytes read and inflated per thread.
+                true => {
+                    let in_flight = (threads * lines).min(rows + 2 * lines);
+                    row * (rows + 2 * lines + rows + 2 * in_flight)
+                }
+                false => row * (3 * (rows + 2 * lines) + 2 * rows),
+            }
         })
         .sum();
     let held = window_rows(graph, &spans);
