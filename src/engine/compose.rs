@@ -4,6 +4,7 @@
 //! upwards, bottom row first.
 
 use super::graph::{Graph, Node, Op};
+use super::memory_bound::{spanned_rows, window_rows};
 use super::region::{rows_of, Regions};
 use super::stage_time::{self, Stage};
 use super::strip::Rows;
@@ -27,6 +28,9 @@ pub struct Composer<'g> {
     graph: &'g Graph,
     /// Per node: the rows it has produced and still keeps.
     windows: Vec<Rows>,
+    /// Per node: the most rows its window holds (`window_rows`), worked out
+    /// at the first strip, whose height is the frame's strips'.
+    held: Vec<usize>,
     /// Per node: the nodes that read it, in graph order.
     consumers: Vec<Vec<usize>>,
     /// Rows of the output node already handed out.
@@ -80,6 +84,7 @@ impl<'g> Composer<'g> {
         Composer {
             graph,
             windows,
+            held: Vec::new(),
             consumers,
             emitted: top,
             fed: top,
@@ -175,6 +180,10 @@ impl<'g> Composer<'g> {
     ) -> Result<Option<Rows>, String> {
         let mut strips: Vec<Option<Rows>> = strips.into_iter().map(Some).collect();
         self.fed = rows.end;
+        if self.held.is_empty() {
+            let spans = spanned_rows(self.graph, &self.regions, self.window, rows.len());
+            self.held = window_rows(self.graph, &spans);
+        }
         // A resampler whose input is read whole could compute every row
         // left at once (an enlarging resize of a short input): it computes
         // what the rows fed so far ask of it, band by band.
@@ -188,6 +197,11 @@ impl<'g> Composer<'g> {
             match graph_node {
                 Node::Input(i) => {
                     let strip = strips[*i].take().expect("one strip per input");
+                    // An empty window takes the strip's planes as they
+                    // are, if they hold all it will.
+                    if self.windows[n].height > 0 || strip.height < self.held[n] {
+                        self.make_room(n);
+                    }
                     match self.regions.upward(n) {
                         true => self.windows[n].prepend(strip),
                         false => self.windows[n].append(strip),
@@ -206,6 +220,7 @@ impl<'g> Composer<'g> {
                     if !rows.is_empty() {
                         // Computed in place, band by band on the pool: nodes
                         // come after their inputs, so those are borrowed apart.
+                        self.make_room(n);
                         let (earlier, rest) = self.windows.split_at_mut(n);
                         let node = &mut rest[0];
                         let height = rows.len();
@@ -238,6 +253,12 @@ impl<'g> Composer<'g> {
         let result = self.take_output();
         self.forget_used_rows(self.graph.output());
         Ok(result)
+    }
+
+    /// Room in node `n`'s window for the most rows it holds: it then grows
+    /// in place all frame long (past them, as a Vec grows).
+    fn make_room(&mut self, n: usize) {
+        self.windows[n].reserve(self.held[n]);
     }
 
     fn take_output(&mut self) -> Option<Rows> {

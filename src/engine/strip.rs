@@ -115,6 +115,27 @@ impl Samples {
         }
     }
 
+    /// How many samples it has room for without moving.
+    fn capacity(&self) -> usize {
+        match self {
+            Samples::F16(v) => v.capacity(),
+            Samples::F32(v) => v.capacity(),
+            Samples::U32(v) => v.capacity(),
+        }
+    }
+
+    /// Room for `len` samples in all, exactly (none if it has it).
+    fn reserve_total(&mut self, len: usize) {
+        fn exact<T>(v: &mut Vec<T>, len: usize) {
+            v.reserve_exact(len.saturating_sub(v.len()));
+        }
+        match self {
+            Samples::F16(v) => exact(v, len),
+            Samples::F32(v) => exact(v, len),
+            Samples::U32(v) => exact(v, len),
+        }
+    }
+
     /// Appends `count` zero samples, written in pieces on the pool (as
     /// compose's tasks, the only caller's): a strip's zeros are megabytes,
     /// which the compose thread would otherwise write alone.
@@ -447,7 +468,10 @@ impl Rows {
     /// Takes the rows of `other` into each plane by `add`.
     fn join(&mut self, other: Rows, add: fn(&mut Samples, &Samples)) {
         assert_eq!(other.width, self.width);
-        if self.height == 0 {
+        // Empty, it takes the other's planes as they are, unless it has
+        // made room (`reserve`) for more rows than they hold.
+        let len = other.height * other.width;
+        if self.height == 0 && self.planes.iter().any(|p| p.capacity() < len) {
             self.planes = other.planes;
         } else {
             for (plane, other) in self.planes.iter_mut().zip(&other.planes) {
@@ -455,6 +479,15 @@ impl Rows {
             }
         }
         self.extent.height += other.extent.height;
+    }
+
+    /// Room for `height` rows in all, so that growing to them moves no
+    /// plane: a plane grown by moving holds its old buffer and a new one
+    /// twice the size, the old left in the heap (`mallopt` in `main.rs`).
+    pub fn reserve(&mut self, height: usize) {
+        for plane in &mut self.planes {
+            plane.reserve_total(height * self.extent.width);
+        }
     }
 
     /// Appends `height` rows of zeros, to be written in place (`bands`).

@@ -141,6 +141,55 @@ fn a_flip_peak_memory_does_not_grow_with_height() {
     );
 }
 
+/// A resize 32 times wider and 32 times shorter: its horizontal pass holds
+/// 8192 columns of f32 across some 600 input rows (a strip's span), 94 MiB.
+/// Grown by a Vec's doubling, that window took twice the rows, its old
+/// buffer left in the heap: a peak of 180 MiB against a bound of 126.
+#[test]
+fn a_resize_enlarging_across_while_shrinking_down_peaks_under_its_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "n", "bg", 256, 4096, "1");
+    let resize = ["resize", "--size", "8192x128", "--filter", "gaussian"];
+    let inputs = ["n.####.exr"];
+    let bound = bound(d, &resize, &inputs, "1");
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let peak = peak_runs(d, &resize, &inputs, "1", 2, true);
+    assert!(peak <= bound, "peak {peak} B over the bound {bound} B");
+}
+
+/// A quarter turn reads its input whole, once: its decode terms count the
+/// input's chunks, the strip built of them and the chunks in flight, not
+/// five strips of it (a bound of 159 MiB for a 37 MiB peak); the peak stays
+/// under the bound for ZIP (decoded straight into the strip) and PIZ
+/// (decoded into chunks, then copied).
+#[test]
+fn a_quarter_turns_input_read_whole_is_counted_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "z", "bg", 2048, 1024, "1");
+    let piz = d.join("p.0001.exr");
+    let args = ["--compression", "piz", "-q"];
+    ok(&[
+        &["transform", s(&d.join("z.0001.exr")), "-o", s(&piz)][..],
+        &args,
+    ]
+    .concat());
+    let turn = ["transform", "--rotate", "90"];
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    for input in ["z.####.exr", "p.####.exr"] {
+        let bound = bound(d, &turn, &[input], "1");
+        let peak = peak_runs(d, &turn, &[input], "1", 2, true);
+        assert!(
+            peak <= bound,
+            "{input}: peak {peak} B over the bound {bound} B"
+        );
+        if input.starts_with('z') {
+            assert!(bound < 3 * peak, "{input}: bound {bound} B, peak {peak} B");
+        }
+    }
+}
+
 #[test]
 fn peak_memory_does_not_grow_with_frames() {
     let dir = tempfile::tempdir().unwrap();
