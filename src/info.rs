@@ -4,6 +4,7 @@
 //! each part closed by its chunk check; `--json` gives the same facts as one
 //! JSON object per file.
 
+use crate::engine::graph::box_text;
 use crate::error::Result;
 use crate::io::reader::ExrFile;
 use crate::io::standard_attributes::attributes;
@@ -249,16 +250,7 @@ pub(crate) fn value_text(value: &AttributeValue) -> String {
         A::F64(x) => format!(": {}", g(*x)),
         A::F32(x) => format!(": {}", g((*x).into())),
         A::I32(x) => format!(": {x}"),
-        A::IntegerBounds(b) => {
-            let end = b.end();
-            format!(
-                ": ({} {}) - ({} {})",
-                b.position.x(),
-                b.position.y(),
-                end.x() - 1,
-                end.y() - 1
-            )
-        }
+        A::IntegerBounds(b) => format!(": {}", box_text(*b)),
         A::FloatRect(r) => format!(": {} - {}", v2f(r.min), v2f(r.max)),
         A::IntVec2(v) => format!(": ({} {})", v.x(), v.y()),
         A::FloatVec2(v) => format!(": {}", v2f(*v)),

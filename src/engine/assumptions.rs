@@ -3,7 +3,7 @@
 //! (`Op::assumptions`). They are read from the first frame of each input;
 //! `commands::run_job` prints each once, unless `--quiet`.
 
-use super::graph::{Display, Node};
+use super::graph::{box_text, Display, Node};
 use super::plan::{HeaderBase, Job, Source};
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
@@ -109,16 +109,6 @@ fn display_windows(job: &Job, texts: &[String], headers: &[Header]) -> Vec<Strin
         return Vec::new();
     };
     let display = |i: usize| headers[i].shared_attributes.display_window;
-    let shown = |b: IntegerBounds| {
-        let end = b.max();
-        format!(
-            "({} {}) - ({} {})",
-            b.position.x(),
-            b.position.y(),
-            end.x(),
-            end.y()
-        )
-    };
     (0..headers.len())
         .filter(|&i| i != kept && display(i) != display(kept))
         .map(|i| {
@@ -127,9 +117,9 @@ fn display_windows(job: &Job, texts: &[String], headers: &[Header]) -> Vec<Strin
                  pixel for pixel at the same coordinates, neither scaled nor moved (resize or \
                  move one first, e.g. oiiotool --resize or --origin)",
                 texts[i],
-                shown(display(i)),
+                box_text(display(i)),
                 texts[kept],
-                shown(display(kept)),
+                box_text(display(kept)),
                 texts[kept]
             )
         })

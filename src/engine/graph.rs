@@ -441,6 +441,18 @@ pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
     IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
 }
 
+/// `b` as exrheader prints a box: `(x0 y0) - (x1 y1)`, its last pixels.
+pub fn box_text(b: IntegerBounds) -> String {
+    let end = b.max();
+    format!(
+        "({} {}) - ({} {})",
+        b.position.x(),
+        b.position.y(),
+        end.x(),
+        end.y()
+    )
+}
+
 /// `w` moved by (dx, dy).
 pub fn moved(w: IntegerBounds, (dx, dy): (i32, i32)) -> IntegerBounds {
     IntegerBounds::new((w.position.x() + dx, w.position.y() + dy), w.size)

@@ -2,7 +2,7 @@
 //! data window, the output header, and the strip height.
 
 use super::deep_input::DeepInput;
-use super::graph::{grow, intersection, union, Display, Graph, Node};
+use super::graph::{box_text, grow, intersection, union, Display, Graph, Node};
 use super::luminance_chroma;
 use super::region::Regions;
 use crate::error::{Error, Kind, Result};
@@ -555,16 +555,11 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             .find(|&(p, h)| p != parts[i] && shown(h) != shown(&header));
         if let Some((_, other)) = mismatch {
             let describe = |h: &Header| {
-                let (w, a) = (
-                    h.shared_attributes.display_window,
-                    h.shared_attributes.pixel_aspect,
-                );
-                let end = w.end();
-                let (x1, y1) = (end.x() - 1, end.y() - 1);
+                let a = &h.shared_attributes;
                 format!(
-                    "({} {}) - ({x1} {y1}) at pixel aspect {a}",
-                    w.position.x(),
-                    w.position.y()
+                    "{} at pixel aspect {}",
+                    box_text(a.display_window),
+                    a.pixel_aspect
                 )
             };
             return Err(Error::usage(format!(

@@ -549,10 +549,15 @@ impl Pass {
         let taps = self.taps_across(input, out, columns.clone(), data.clone());
         let geometry = self.geometry();
         let (lo, hi) = (data.start as i32, data.end as i32 - 1);
-        let nearest: Vec<usize> = columns
-            .clone()
-            .map(|c| (geometry.nearest(out.x + c as i32) - input.x).clamp(lo, hi) as usize)
-            .collect();
+        // Each column's nearest source column, for u32 channels (none else).
+        let ids = input.planes.iter().any(|p| nearest_only(p.kind()));
+        let nearest: Vec<usize> = match ids {
+            true => columns
+                .clone()
+                .map(|c| (geometry.nearest(out.x + c as i32) - input.x).clamp(lo, hi) as usize)
+                .collect(),
+            false => Vec::new(),
+        };
         let mut row = vec![0.0f32; input.width];
         let mut values = vec![0.0f32; columns.len()];
         for y in out.valid_rows() {

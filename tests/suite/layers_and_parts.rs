@@ -3,7 +3,7 @@
 //! and on multi-part files written here.
 
 use crate::common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn merge_ok(args: &[&str]) {
     let out = run(args);
@@ -517,11 +517,10 @@ fn all_parts_runs_a_one_input_operation_on_every_part() {
     );
 }
 
-#[test]
-fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let beauty = random_rgba(81, 0, 0, 24, 16, Kind::Half, true);
+/// In `d`: render.exr, parts "beauty" (RGBA, Z) and "depth" (Z) of random
+/// pixels from `seed`, an empty folder for the output, and the output's path.
+fn beauty_and_depth(d: &Path, seed: u64) -> (PathBuf, PathBuf, PathBuf) {
+    let beauty = random_rgba(seed, 0, 0, 24, 16, Kind::Half, true);
     let mut depth = beauty.clone();
     depth.channels.retain(|name, _| name == "Z");
     let input = d.join("render.exr");
@@ -532,6 +531,13 @@ fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
     let out_dir = d.join("out");
     std::fs::create_dir(&out_dir).unwrap();
     let output = out_dir.join("o.exr");
+    (input, out_dir, output)
+}
+
+#[test]
+fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
+    let dir = tempfile::tempdir().unwrap();
+    let (input, out_dir, output) = beauty_and_depth(dir.path(), 81);
     // premult of a part without colour: the part is named, nothing written.
     let out = run(&["premult", s(&input), "-o", s(&output), "--all-parts"]);
     let message = stderr(&out);
@@ -620,18 +626,7 @@ fn a_jobs_part_index_and_the_dry_runs_part() {
 #[test]
 fn a_geometry_change_to_one_part_of_many_is_refused_or_made_to_every_part() {
     let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let beauty = random_rgba(82, 0, 0, 24, 16, Kind::Half, true);
-    let mut depth = beauty.clone();
-    depth.channels.retain(|name, _| name == "Z");
-    let input = d.join("render.exr");
-    write_parts(
-        &input,
-        &[("beauty", "main", &beauty), ("depth", "main", &depth)],
-    );
-    let out_dir = d.join("out");
-    std::fs::create_dir(&out_dir).unwrap();
-    let output = out_dir.join("o.exr");
+    let (input, out_dir, output) = beauty_and_depth(dir.path(), 82);
     let depth_part = format!("{}:depth", s(&input));
     let refused: [&[&str]; 5] = [
         &["resize", s(&input), "--scale", "0.5"],
