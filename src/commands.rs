@@ -1,6 +1,7 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
 use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
+use crate::engine::fingerprint;
 use crate::engine::graph::NodeId;
 use crate::engine::graph::{Graph, GraphBuilder, Node, Op};
 use crate::engine::interrupt;
@@ -47,6 +48,9 @@ pub struct DryRun {
     /// Every file it would read, and every frame it would write.
     pub reads: Vec<PathBuf>,
     pub writes: Vec<PathBuf>,
+    /// Frames already at the output that another job (or tool) made:
+    /// `--resume` writes them again (specs/overnight.md).
+    pub others: Vec<PathBuf>,
 }
 
 /// Runs `command`; a dry run of a frame-writing command gives what it found.
@@ -639,9 +643,14 @@ pub(crate) fn run_job(
         }
     }
     if run.dry_run {
-        let mut bound = 0;
+        let (mut bound, mut others) = (0, Vec::new());
+        let media = job.media.as_ref().map(|r| r.media.format);
         for sources in &job.frames {
-            for plan in plan_parts(job, sources)? {
+            let plans = plan_parts(job, sources)?;
+            if fingerprint::made_by(&plans[0].output, media, &plans[0].fingerprint) == Some(false) {
+                others.push(plans[0].output.clone());
+            }
+            for plan in plans {
                 bound = memory_bound(&plan, &job.graph).max(bound);
             }
         }
@@ -656,11 +665,15 @@ pub(crate) fn run_job(
                 job.output.display(),
                 bound.div_ceil(1 << 20)
             );
+            if !others.is_empty() {
+                eprintln!("exrcomp: warning: {}", others_made(&others));
+            }
         }
         return Ok(Some(DryRun {
             memory: bound,
             reads,
             writes: writes.into_iter().map(|(_, path)| path).collect(),
+            others,
         }));
     }
     if let Some(slate) = &slate {
@@ -692,6 +705,20 @@ pub(crate) fn run_job(
         ));
     }
     Ok(None)
+}
+
+/// A warning that `files`, frames a job would write, are there already,
+/// made by another job or tool.
+pub fn others_made(files: &[PathBuf]) -> String {
+    let name = |i: usize| files[i].display().to_string();
+    let which = match files.len() {
+        1 => name(0),
+        n => format!("{} ... {}", name(0), name(n - 1)),
+    };
+    format!(
+        "{} already at the output another job or tool made ({which}): --resume writes them again",
+        count(files.len(), "frame"),
+    )
 }
 
 /// Writes (or with --resume keeps) the slate, quietly: the run's report
@@ -866,6 +893,14 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     fn kept(&self, frame: i64) {
         self.summary.lock().expect("not poisoned").kept.push(frame);
         self.report.frame_done();
+    }
+
+    fn stale(&self, frame: i64) {
+        self.summary
+            .lock()
+            .expect("not poisoned")
+            .redone
+            .push(frame);
     }
 
     fn failed(&self, frame: i64, error: &Error) {

@@ -212,6 +212,12 @@ pub fn task_command(
 pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = farm;
     let (task, needs, dry) = task_command(&job.command, &job.frames, cwd, job.threads)?;
+    if !dry.others.is_empty() {
+        eprintln!(
+            "exrcomp: warning: {}",
+            crate::commands::others_made(&dry.others)
+        );
+    }
     let exrcomp = this_exrcomp()?;
     let files = match farm {
         Farm::Openjd(_) => {

@@ -37,6 +37,7 @@ pub enum PixelType {
     Float,
 }
 
+#[derive(Debug)]
 pub struct Plate {
     pub kind: PlateKind,
     /// The display window is 0,0 .. width,height; the data window is that

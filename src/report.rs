@@ -22,6 +22,8 @@ pub struct Summary {
     pub seconds: f64,
     /// Frames whose complete output was kept (--resume).
     pub kept: Vec<i64>,
+    /// Frames written again over a file another job made (--resume).
+    pub redone: Vec<i64>,
     /// Frames that failed on bad input or a bug (--keep-going), with the
     /// error.
     pub failed: Vec<(i64, Error)>,
@@ -115,6 +117,7 @@ impl Report {
                 "pixels_per_second": summary.pixels as f64 / seconds,
                 "peak_rss_bytes": rss,
                 "kept": summary.kept,
+                "redone": summary.redone,
                 "failed": failed,
                 "skipped_missing": summary.skipped,
                 "replaced_missing": summary.replaced,
@@ -138,6 +141,14 @@ impl Report {
                 eprintln!(
                     "{} already complete, kept (--resume)",
                     count(summary.kept.len(), "frame")
+                );
+            }
+            if !summary.redone.is_empty() {
+                eprintln!(
+                    "{} redone: the file there was another job's, another tool's or damaged \
+                     (--resume): {}",
+                    count(summary.redone.len(), "frame"),
+                    format_frame_list(&summary.redone)
                 );
             }
             for line in &summary.replaced {

@@ -67,6 +67,7 @@ pub fn lines(job: &Job, slate: &SlateFrame, header: &Header) -> Vec<String> {
 }
 
 /// The slate's pixels: RGBA, black and opaque, the text's lit pixels white.
+#[derive(Debug)]
 pub struct Slate {
     pub window: IntegerBounds,
     pub labels: Vec<Label>,

@@ -337,6 +337,7 @@ mod tests {
 
     /// Sums each pixel's column over rows y - halo ..= y + halo, clamped to
     /// the image: a stand-in for any neighbourhood filter.
+    #[derive(Debug)]
     struct VerticalSum {
         halo: usize,
         top: i32,
@@ -484,6 +485,7 @@ mod tests {
     /// Scales a one-channel image by `num / den` in both axes, each output
     /// pixel the mean of the input pixels whose centres fall in it (or the
     /// one it falls in, enlarging): a stand-in for any resampling op.
+    #[derive(Debug)]
     struct Rescale {
         num: i32,
         den: i32,

@@ -38,8 +38,10 @@ impl Display {
 }
 
 /// An operation over strips of rows. Implementations are pure: the output rows
-/// depend only on the input rows they are given.
-pub trait Op: Send + Sync {
+/// depend only on the input rows they are given. Its `Debug` text holds every
+/// parameter that changes its result: it is what the frame's fingerprint
+/// records of it (`fingerprint.rs`), so it must not hold addresses.
+pub trait Op: Send + Sync + std::fmt::Debug {
     /// Rows above and below an output row that the op reads from its inputs.
     fn halo(&self) -> usize {
         0

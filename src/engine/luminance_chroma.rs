@@ -93,6 +93,7 @@ pub fn luminance_weights(chromaticities: Option<&Chromaticities>) -> [f32; 3] {
 }
 
 /// Luminance/chroma (or luminance) to RGB.
+#[derive(Debug)]
 pub struct FromLuminance {
     /// Luminance weights of R, G, B.
     pub weights: [f32; 3],

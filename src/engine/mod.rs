@@ -5,6 +5,7 @@ pub mod compose;
 pub mod decode;
 pub mod deep_input;
 pub mod encode;
+pub mod fingerprint;
 pub mod graph;
 pub mod interrupt;
 pub mod luminance_chroma;

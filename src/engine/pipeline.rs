@@ -6,6 +6,7 @@
 use super::compose::Composer;
 use super::decode::{decode_regions, InputCursor, Region};
 use super::encode::encode_rows;
+use super::fingerprint;
 use super::interrupt;
 use super::passthrough::PassThrough;
 use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
@@ -42,8 +43,12 @@ enum Msg<T> {
 pub trait Events: Sync {
     /// An output frame is in place.
     fn written(&self, plan: &FramePlan);
-    /// A frame's output already exists complete (--resume).
+    /// A frame's output already exists complete, made by this job from
+    /// these inputs (--resume).
     fn kept(&self, frame: i64);
+    /// A frame's output exists complete but another job (or tool) made it:
+    /// it is written again (--resume).
+    fn stale(&self, frame: i64);
     /// A frame failed on bad input or a bug, and the run goes on
     /// (--keep-going).
     fn failed(&self, frame: i64, error: &Error);
@@ -204,17 +209,13 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
         if interrupt::requested() {
             break;
         }
-        if job.resume && output_complete(job, &job.output.path(sources.frame)) {
-            events.kept(sources.frame);
-            continue;
-        }
         let mut begun = false;
         let (output, label) = (
             job.output.path(sources.frame),
             job.frame_label(sources.frame),
         );
         match frame_work(&output, label, || {
-            decode_frame(job, sources, &tx, &mut begun)
+            decode_frame(job, events, sources, &tx, &mut begun)
         }) {
             Ok(true) => {}
             // Downstream has stopped (and reports why) or we were interrupted.
@@ -237,14 +238,27 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
 }
 
 /// Sends one frame downstream, part after part (one, but with
-/// `--all-parts`); `Ok(false)` when it had to stop part-way.
+/// `--all-parts`), unless `--resume` keeps its output; `Ok(false)` when it
+/// had to stop part-way.
 fn decode_frame(
     job: &Job,
+    events: &impl Events,
     sources: &FrameSources,
     tx: &Sender<Msg<Decoded>>,
     begun: &mut bool,
 ) -> Result<bool> {
-    for plan in plan_parts(job, sources)? {
+    let plans = plan_parts(job, sources)?;
+    if job.resume {
+        match resumed(job, &plans[0]) {
+            Resumed::Kept => {
+                events.kept(sources.frame);
+                return Ok(true);
+            }
+            Resumed::Stale => events.stale(sources.frame),
+            Resumed::Absent => {}
+        }
+    }
+    for plan in plans {
         let plan = Arc::new(plan);
         let msg = match *begun {
             false => Msg::Begin(plan.clone()),
@@ -338,16 +352,34 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
     Ok(true)
 }
 
-/// Whether `path` holds a complete output: an EXR file with a valid header
-/// and offset table whose every chunk decodes, or a complete review frame
-/// (`media::complete`).
-fn output_complete(job: &Job, path: &std::path::Path) -> bool {
-    if let Some(review) = &job.media {
-        return media::complete(path, review.media.format);
+/// What `--resume` finds at a frame's output.
+enum Resumed {
+    /// Nothing: the frame is written.
+    Absent,
+    /// A file this job would not write as it is: another job's, another
+    /// tool's (no fingerprint) or damaged. The frame is written again.
+    Stale,
+    /// A complete frame with this job's fingerprint for it: kept.
+    Kept,
+}
+
+/// Whether `plan`'s output is there, complete (an EXR file whose every
+/// chunk decodes, or a complete review frame: `media::complete`), and made
+/// by this job from these inputs (its fingerprint, `fingerprint.rs`).
+fn resumed(job: &Job, plan: &FramePlan) -> Resumed {
+    let (path, media) = (&plan.output, job.media.as_ref().map(|r| r.media.format));
+    // Only a frame that would be kept is worth decoding whole.
+    let complete = || match media {
+        Some(format) => media::complete(path, format),
+        None => ExrFile::open(path, None).is_ok_and(|file| {
+            (0..file.meta.headers.len()).all(|part| file.check_part(part).is_ok())
+        }),
+    };
+    match fingerprint::made_by(path, media, &plan.fingerprint) {
+        None => Resumed::Absent,
+        Some(true) if complete() => Resumed::Kept,
+        Some(_) => Resumed::Stale,
     }
-    ExrFile::open(path, None)
-        .and_then(|file| (0..file.meta.headers.len()).try_for_each(|p| file.check_part(p)))
-        .is_ok()
 }
 
 fn compose_stage(
@@ -550,7 +582,16 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
                     Some(Encoded::Chunks(_)) => Err(Error::internal("chunks for a review frame")),
                     None => Ok(None),
                 };
-                media::write_frame(&plan.output, plan.label, &review.media, size, alpha, strips)
+                let note = (fingerprint::ATTRIBUTE, plan.fingerprint.as_str());
+                media::write_frame(
+                    &plan.output,
+                    plan.label,
+                    &review.media,
+                    size,
+                    alpha,
+                    note,
+                    strips,
+                )
             }
             None => {
                 let chunks = || match next()? {

@@ -2,6 +2,7 @@
 //! data window, the output header, and the strip height.
 
 use super::deep_input::DeepInput;
+use super::fingerprint;
 use super::graph::{box_text, grow, intersection, union, Display, Graph, Node};
 use super::luminance_chroma;
 use super::region::Regions;
@@ -153,6 +154,7 @@ impl Source {
 }
 
 /// Where the output header's attributes come from.
+#[derive(Debug)]
 pub enum HeaderBase {
     /// The header of this input (the background, for merges).
     Input(usize),
@@ -219,6 +221,8 @@ pub struct FramePlan {
     /// With `--all-parts`, on the first part's plan: every part's output
     /// header, each part planned and streamed in turn (`plan_parts`).
     pub every_part: Option<Vec<Header>>,
+    /// What made the frame (`fingerprint.rs`), written into every part.
+    pub fingerprint: String,
 }
 
 impl FramePlan {
@@ -493,6 +497,12 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
     job.attributes.erase(&mut header);
     super::provenance::stamp(&mut header);
     edit(&mut header)?;
+    let files = inputs
+        .iter()
+        .map(Arc::as_ref)
+        .chain((deep.iter().flatten()).flat_map(|d| d.files[1..].iter().map(|(f, _)| f.as_ref())));
+    let fingerprint = fingerprint::of_frame(job, sources, files);
+    fingerprint::stamp(&mut header, &fingerprint);
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
@@ -538,6 +548,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             .map(|part| {
                 let mut part = part.clone();
                 job.attributes.carry(&mut part, &header);
+                fingerprint::stamp(&mut part, &fingerprint);
                 part
             })
             .collect(),
@@ -777,6 +788,7 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         carried,
         carried_headers,
         every_part: None,
+        fingerprint,
     })
 }
 

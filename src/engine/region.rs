@@ -261,6 +261,7 @@ mod tests {
 
     /// Mirrors rows about the middle of `0..height` (a flip) when `flip`,
     /// else reads each row as it is, and either way resamples (requests).
+    #[derive(Debug)]
     struct Mirror {
         height: i32,
         flip: bool,
@@ -283,6 +284,7 @@ mod tests {
     }
 
     /// Adds its inputs (any op that does not resample).
+    #[derive(Debug)]
     struct Sum;
 
     impl Op for Sum {

@@ -274,21 +274,24 @@ pub struct Strip {
 
 /// Writes one review frame of `width` x `height` pixels (with alpha or
 /// not) from the strips `next` yields, top to bottom (`Ok(None)` ends
-/// them), under a temporary name renamed when complete. An error from
-/// `next` abandons the file and is returned as is.
+/// them), under a temporary name renamed when complete, recording `note`
+/// (a key and its text: the frame's fingerprint) where the format keeps
+/// text (`note`). An error from `next` abandons the file and is returned
+/// as is.
 pub fn write_frame(
     path: &Path,
     frame: Option<i64>,
     media: &Media,
     size: (usize, usize),
     alpha: bool,
+    note: (&str, &str),
     mut next: impl FnMut() -> Result<Option<Strip>>,
 ) -> Result<()> {
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
     super::writer::write_in_place(path, frame, |out| match media.format {
-        Format::Png => write_png(out, media.bits, size, alpha, &mut next, &fail),
-        Format::Jpeg => write_jpeg(out, media.quality, size, &mut next, &fail),
-        Format::Tiff => write_tiff(out, media.bits, size, alpha, &mut next, &fail),
+        Format::Png => write_png(out, media.bits, size, alpha, note, &mut next, &fail),
+        Format::Jpeg => write_jpeg(out, media.quality, size, note, &mut next, &fail),
+        Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Exr => Err(Error::internal("an EXR frame written as review media")),
     })
 }
@@ -301,10 +304,12 @@ fn write_png(
     bits: Bits,
     (width, height): (usize, usize),
     alpha: bool,
+    (key, text): (&str, &str),
     next: Next,
     fail: Fail,
 ) -> Result<()> {
     let mut encoder = png::Encoder::new(out, width as u32, height as u32);
+    (encoder.add_text_chunk(key.into(), text.into())).map_err(|e| fail(&e))?;
     encoder.set_color(match alpha {
         true => png::ColorType::Rgba,
         false => png::ColorType::Rgb,
@@ -335,6 +340,7 @@ fn write_jpeg(
     out: &mut BufWriter<&File>,
     quality: u8,
     (width, height): (usize, usize),
+    note: (&str, &str),
     next: Next,
     fail: Fail,
 ) -> Result<()> {
@@ -350,6 +356,10 @@ fn write_jpeg(
         strip: RefCell::new((0, Vec::new())),
         error: RefCell::new(None),
     };
+    let out = Commented {
+        out,
+        comment: Some(comment(note)),
+    };
     let encoder = jpeg_encoder::Encoder::new(out, quality);
     let encoded = encoder.encode_image(&image);
     if let Some(e) = image.error.into_inner() {
@@ -360,6 +370,45 @@ fn write_jpeg(
     match (image.next.into_inner())()? {
         None => Ok(()),
         Some(_) => Err(Error::internal("more rows than the JPEG's height")),
+    }
+}
+
+/// A JPEG comment (COM) segment holding `key=text`.
+fn comment((key, text): (&str, &str)) -> Vec<u8> {
+    let body = format!("{key}={text}");
+    let length = (body.len() + 2) as u16;
+    [&[0xff, 0xfe], &length.to_be_bytes()[..], body.as_bytes()].concat()
+}
+
+/// The encoder's bytes with a comment segment after its first marker
+/// (start of image): the encoder writes none of its own.
+struct Commented<W: Write> {
+    out: W,
+    comment: Option<Vec<u8>>,
+}
+
+impl<W: Write> Write for Commented<W> {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        self.write_all(bytes).map(|()| bytes.len())
+    }
+
+    fn write_all(&mut self, bytes: &[u8]) -> std::io::Result<()> {
+        match self.comment.take() {
+            // The encoder writes its start marker (FF D8) on its own.
+            Some(comment) if bytes.len() >= 2 => {
+                self.out.write_all(&bytes[..2])?;
+                self.out.write_all(&comment)?;
+                self.out.write_all(&bytes[2..])
+            }
+            comment => {
+                self.comment = comment;
+                self.out.write_all(bytes)
+            }
+        }
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.out.flush()
     }
 }
 
@@ -432,6 +481,7 @@ fn write_tiff(
     bits: Bits,
     size: (usize, usize),
     alpha: bool,
+    note: (&str, &str),
     next: Next,
     fail: Fail,
 ) -> Result<()> {
@@ -439,25 +489,33 @@ fn write_tiff(
     let mut encoder = tiff::encoder::TiffEncoder::new(out).map_err(|e| fail(&e))?;
     match bits {
         Bits::Eight => {
-            tiff_image::<colortype::RGB8, _>(&mut encoder, size, alpha, next, fail, |s| match s {
-                Samples::U8(v) => Some(v),
-                _ => None,
-            })
-        }
-        Bits::Sixteen => {
-            tiff_image::<colortype::RGB16, _>(&mut encoder, size, alpha, next, fail, |s| match s {
-                Samples::U16(v) => Some(v),
-                _ => None,
-            })
-        }
-        Bits::Float => {
-            tiff_image::<colortype::RGB32Float, _>(&mut encoder, size, alpha, next, fail, |s| {
+            tiff_image::<colortype::RGB8, _>(&mut encoder, size, alpha, note, next, fail, |s| {
                 match s {
-                    Samples::F32(v) => Some(v),
+                    Samples::U8(v) => Some(v),
                     _ => None,
                 }
             })
         }
+        Bits::Sixteen => {
+            tiff_image::<colortype::RGB16, _>(&mut encoder, size, alpha, note, next, fail, |s| {
+                match s {
+                    Samples::U16(v) => Some(v),
+                    _ => None,
+                }
+            })
+        }
+        Bits::Float => tiff_image::<colortype::RGB32Float, _>(
+            &mut encoder,
+            size,
+            alpha,
+            note,
+            next,
+            fail,
+            |s| match s {
+                Samples::F32(v) => Some(v),
+                _ => None,
+            },
+        ),
     }
 }
 
@@ -467,6 +525,7 @@ fn tiff_image<C, W>(
     encoder: &mut tiff::encoder::TiffEncoder<W>,
     (width, height): (usize, usize),
     alpha: bool,
+    (key, text): (&str, &str),
     next: Next,
     fail: Fail,
     take: fn(Samples) -> Option<Vec<C::Inner>>,
@@ -487,6 +546,10 @@ where
     }
     image
         .rows_per_strip(TIFF_STRIP_ROWS as u32)
+        .map_err(|e| fail(&e))?;
+    // TIFF has no key-value text: the description holds `key=text`.
+    (image.encoder())
+        .write_tag(tiff::tags::Tag::ImageDescription, &*format!("{key}={text}"))
         .map_err(|e| fail(&e))?;
     let row_samples = width * if alpha { 4 } else { 3 };
     let mut held: Vec<C::Inner> = Vec::with_capacity(row_samples * TIFF_STRIP_ROWS);
@@ -540,4 +603,54 @@ pub fn complete(path: &Path, format: Format) -> bool {
             .is_ok_and(|b| b.starts_with(&[0xff, 0xd8]) && b.ends_with(&[0xff, 0xd9])),
         Format::Exr => false,
     }
+}
+
+/// The text a review frame written by `write_frame` records under `key`,
+/// if it is there.
+pub fn note(path: &Path, format: Format, key: &str) -> Option<String> {
+    let file = super::reader::open_regular(path).ok()?;
+    let reader = std::io::BufReader::new(file);
+    let prefix = format!("{key}=");
+    let from = |text: String| text.strip_prefix(&prefix).map(str::to_string);
+    match format {
+        Format::Png => {
+            let decoder = png::Decoder::new(reader).read_info().ok()?;
+            let chunks = &decoder.info().uncompressed_latin1_text;
+            chunks
+                .iter()
+                .find(|c| c.keyword == key)
+                .map(|c| c.text.clone())
+        }
+        Format::Tiff => {
+            let mut decoder = tiff::decoder::Decoder::new(reader).ok()?;
+            from(
+                decoder
+                    .get_tag_ascii_string(tiff::tags::Tag::ImageDescription)
+                    .ok()?,
+            )
+        }
+        Format::Jpeg => jpeg_comments(reader).into_iter().find_map(from),
+        Format::Exr => None,
+    }
+}
+
+/// The comment segments of a JPEG stream, up to its first scan.
+fn jpeg_comments(mut reader: impl std::io::Read) -> Vec<String> {
+    let mut comments = Vec::new();
+    let mut marker = [0u8; 4];
+    if reader.read_exact(&mut marker[..2]).is_err() || marker[..2] != [0xff, 0xd8] {
+        return comments;
+    }
+    // Each segment: FF, its kind, a big-endian length counting itself.
+    while reader.read_exact(&mut marker).is_ok() && marker[0] == 0xff && marker[1] != 0xda {
+        let length = u16::from_be_bytes([marker[2], marker[3]]).saturating_sub(2);
+        let mut body = vec![0; length as usize];
+        if reader.read_exact(&mut body).is_err() {
+            break;
+        }
+        if marker[1] == 0xfe {
+            comments.push(String::from_utf8_lossy(&body).into_owned());
+        }
+    }
+    comments
 }

@@ -51,6 +51,29 @@ pub fn open_regular(path: &Path) -> std::io::Result<File> {
     )))
 }
 
+/// `ExrFile::identity` of `file`, whose header ends at `table_start`.
+fn identity(
+    file: &File,
+    len: u64,
+    table_start: u64,
+    table: &[u8],
+) -> std::result::Result<u128, String> {
+    let header = read_at(file, 0, table_start as usize).map_err(|m| format!("the header: {m}"))?;
+    let modified = file
+        .metadata()
+        .and_then(|m| m.modified())
+        .map_err(|e| format!("cannot read its modification time: {e}"))?;
+    let since = modified
+        .duration_since(std::time::UNIX_EPOCH)
+        .unwrap_or_default();
+    let mut hash = xxhash_rust::xxh3::Xxh3::new();
+    hash.update(&len.to_le_bytes());
+    hash.update(&since.as_nanos().to_le_bytes());
+    hash.update(&header);
+    hash.update(table);
+    Ok(hash.digest128())
+}
+
 /// Largest decompressed block accepted. A header field can claim anything; this
 /// bound keeps a damaged file from making a codec allocate gigabytes. A 64K-wide
 /// float RGBA block of 32 lines is 32 MiB, so real files stay far below it.
@@ -111,6 +134,8 @@ pub struct ExrFile {
     offsets: Vec<Vec<u64>>,
     /// Every chunk offset of the file, sorted: where each chunk's bytes end.
     sorted_offsets: Vec<u64>,
+    /// What the file is, for frames' fingerprints (`identity`).
+    identity: u128,
 }
 
 /// The file from byte `at` on, as a `Read` of positioned reads (the header
@@ -178,6 +203,7 @@ impl ExrFile {
 
         let table = read_at(&file, table_start, total_chunks * 8)
             .map_err(|m| err(format!("the offset table: {m}")))?;
+        let identity = identity(&file, len, table_start, &table).map_err(err)?;
         let mut entries = table
             .chunks_exact(8)
             .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")));
@@ -207,7 +233,18 @@ impl ExrFile {
             meta,
             offsets,
             sorted_offsets,
+            identity,
         })
+    }
+
+    /// A hash of the file's length, modification time, header and offset
+    /// table: what a frame's fingerprint records of each file it read
+    /// (specs/overnight.md). Rewriting a plate changes its chunks' sizes,
+    /// so its table, or at least its time; the header holds what is not
+    /// pixels. A copy that does not keep the time is another file to it:
+    /// its frames are made again, never kept wrongly.
+    pub fn identity(&self) -> u128 {
+        self.identity
     }
 
     pub fn header(&self, part: usize) -> &Header {

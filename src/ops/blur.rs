@@ -83,6 +83,7 @@ pub fn weights(filter: Filter, radius: usize) -> Vec<f32> {
 }
 
 /// The horizontal pass: the filtered channels only, as f32.
+#[derive(Debug)]
 pub struct Horizontal {
     pub weights: Arc<Vec<f32>>,
     pub layers: Selection,
@@ -90,6 +91,7 @@ pub struct Horizontal {
 
 /// The vertical pass over [horizontal pass, original]: the original's
 /// channels and types, the filtered ones from the first input.
+#[derive(Debug)]
 pub struct Vertical {
     pub weights: Arc<Vec<f32>>,
     pub layers: Selection,

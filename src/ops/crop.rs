@@ -180,6 +180,7 @@ impl Length for Sides {
     }
 }
 
+#[derive(Debug)]
 enum Window {
     Region(IntegerBounds),
     Grow(Sides),
@@ -204,6 +205,7 @@ impl Window {
     }
 }
 
+#[derive(Debug)]
 pub struct Crop {
     window: Window,
     display: bool,

@@ -307,6 +307,7 @@ macro_rules! params {
         $($(#[doc = $doc:literal])* $field:ident : $ty:ty $([$bound:path])? $({$unit:ident})? $(= $default:literal)?),* $(,)?
     }) => {
         $(#[doc = $sdoc])*
+        #[derive(Debug)]
         pub struct $name {
             $($(#[doc = $doc])* pub $field: $ty,)*
         }

@@ -55,7 +55,7 @@ params! {
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
 
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Step {
     /// Inputs (I4, I3): I4 with its colours replaced by I4 - I3.
     Light,
@@ -63,6 +63,7 @@ pub enum Step {
     Apply { gain: f32 },
 }
 
+#[derive(Debug)]
 pub struct Shadow(pub Step);
 
 impl Op for Shadow {

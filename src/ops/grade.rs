@@ -173,7 +173,7 @@ impl Value for Luminance {
 }
 
 /// A change of each pixel's colour alone: R, G and B of a run of pixels.
-pub trait ColourMap: Send + Sync + 'static {
+pub trait ColourMap: Send + Sync + std::fmt::Debug + 'static {
     fn apply(&self, rgb: &mut [Vec<f32>; 3]);
 }
 
@@ -310,6 +310,7 @@ impl ColourMap for Grade {
 }
 
 /// Colour times a gain per channel (2^stops).
+#[derive(Debug)]
 pub struct Exposure(pub [f32; 3]);
 
 impl ColourMap for Exposure {
@@ -322,6 +323,7 @@ impl ColourMap for Exposure {
 
 /// (1 − s) Y + s C, Y the weighted sum of R, G, B: C exactly at s = 1, Y
 /// at s = 0 (oiiotool's `--saturate`).
+#[derive(Debug)]
 pub struct Saturation {
     pub factor: f32,
     pub weights: [f32; 3],
@@ -343,6 +345,7 @@ impl ColourMap for Saturation {
 /// reads as 0 and is not written) inside the data window; with `unpremult`,
 /// on colour divided by alpha (where it is not 0), multiplied by it after
 /// (so 0 where alpha is 0), as `unpremult`, the map and `premult` in turn.
+#[derive(Debug)]
 pub struct Colour<M> {
     map: M,
     unpremult: bool,

@@ -111,6 +111,7 @@ pub const TRIANGULATE: Operation = Operation {
     measure: None,
 };
 
+#[derive(Debug)]
 /// A screen colour: `green`, `blue` or R,G,B with one channel above the
 /// others.
 pub struct Screen(pub [f32; 3]);
@@ -138,6 +139,7 @@ const RGB: [&str; 3] = ["R", "G", "B"];
 /// Backgrounds closer than this (squared RGB distance) tell nothing apart.
 pub const TRIANGULATION_EPSILON: f32 = 1e-4;
 
+#[derive(Debug)]
 pub struct Key {
     /// The screen's colour.
     pub screen: [f32; 3],
@@ -188,6 +190,7 @@ impl Key {
     }
 }
 
+#[derive(Debug)]
 pub struct DiffMatte {
     pub threshold: f32,
     pub softness: f32,
@@ -238,6 +241,7 @@ pub fn triangulate(ca: [f32; 3], ba: [f32; 3], cb: [f32; 3], bb: [f32; 3]) -> ([
     )
 }
 
+#[derive(Debug)]
 /// Which matte an op pulls.
 pub enum Pull {
     /// Input: the footage.
@@ -248,6 +252,7 @@ pub enum Pull {
     Triangulation,
 }
 
+#[derive(Debug)]
 pub struct Matte(pub Pull);
 
 fn rgb(rows: &Rows, y: i32, columns: &std::ops::Range<usize>, out: &mut [Vec<f32>; 3]) {

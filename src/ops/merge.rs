@@ -273,6 +273,7 @@ fn push_stack(graph: &mut GraphBuilder, layers: &[NodeId], over: impl Fn() -> Me
         .fold(*bottom, |below, &layer| graph.add(over(), &[layer, below]))
 }
 
+#[derive(Debug)]
 pub struct Merge {
     pub op: MergeOp,
     /// Inputs and output are straight colour: premultiply, merge, unpremultiply.

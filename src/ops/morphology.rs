@@ -55,6 +55,7 @@ fn build(
     Ok(graph.add(op, inputs))
 }
 
+#[derive(Debug)]
 pub struct Morphology {
     pub radius: usize,
     /// Largest (dilate) instead of smallest (erode).

@@ -38,6 +38,7 @@ pub const UNPREMULT: Operation = Operation {
     measure: None,
 };
 
+#[derive(Debug)]
 pub struct Premult {
     /// Divide instead of multiply (`unpremult`).
     pub inverse: bool,

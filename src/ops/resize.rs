@@ -409,6 +409,18 @@ type ColumnTaps = Vec<(Vec<usize>, Vec<f32>)>;
 /// column and valid columns, the input's first column and valid columns.
 type TapsKey = (i32, Range<usize>, i32, Range<usize>);
 
+/// Its parameters: the geometry and taps are worked out from the frames
+/// (`Op`'s `Debug`: what the fingerprint records).
+impl std::fmt::Debug for Pass {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Pass")
+            .field("axis", &self.axis)
+            .field("target", &self.target)
+            .field("filter", &self.filter)
+            .finish_non_exhaustive()
+    }
+}
+
 impl Pass {
     fn new(axis: Axis, target: Target, filter: Filter) -> Self {
         Pass {

@@ -170,6 +170,7 @@ pub fn layer_to_rgba(layer: &str) -> Result<Vec<Item>, String> {
 
 /// The node: the output's channels from its first input (and with `into`,
 /// every channel of the second it does not replace).
+#[derive(Debug)]
 pub struct Shuffle {
     pub items: Vec<Item>,
     pub into: bool,

@@ -55,6 +55,7 @@ impl Value for Eye {
     const CHOICES: &'static [&'static str] = &["left", "right"];
 }
 
+#[derive(Debug)]
 pub struct Stereo {
     pub eye: Eye,
     /// Pixels of shift at depth 1 (the shift is K / Z).

@@ -286,6 +286,16 @@ pub struct Transform {
     data: Mutex<IntegerBounds>,
 }
 
+/// Its parameters: the maps and windows are worked out from the frames
+/// (`Op`'s `Debug`: what the fingerprint records).
+impl std::fmt::Debug for Transform {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Transform")
+            .field("params", &self.params)
+            .finish_non_exhaustive()
+    }
+}
+
 impl Transform {
     pub fn new(params: Params) -> Self {
         Transform {

@@ -70,6 +70,7 @@ fn measure(args: &Args, job: &Job) -> crate::error::Result<Vec<(&'static str, St
     Ok(vec![("max_displacement", reach.to_string())])
 }
 
+#[derive(Debug)]
 /// Two channel names: `X,Y` (a job file's `["X", "Y"]` too).
 pub struct Vectors(pub [String; 2]);
 
@@ -84,6 +85,7 @@ impl Value for Vectors {
     }
 }
 
+#[derive(Debug)]
 pub struct VectorBlur {
     /// Multiplies the displacement: 0 none, 1 as rendered.
     pub scale: f32,

@@ -37,6 +37,7 @@ params! {
 
 const COLOURS: [&str; 3] = ["R", "G", "B"];
 
+#[derive(Debug)]
 pub struct ZMerge {
     pub z_channel: String,
 }

@@ -39,6 +39,7 @@ mod shuffle;
 mod slate;
 mod stack;
 mod stage_times;
+mod stale_frames;
 mod tiled;
 mod tiled_output;
 mod transform;

@@ -99,7 +99,16 @@ pub fn processor(config: &Config, transform: Transform) -> Result<Processor, Str
 
 /// An OCIO CPU processor as a colour map: built once per command, shared by
 /// every band of the node (the engine runs them on the pool at once).
-pub struct Ocio(CpuProcessor);
+pub struct Ocio(CpuProcessor, String);
+
+/// A processor's maths, as its cache id (a hash of its ops and their
+/// values): what a frame's fingerprint records, so that a config with the
+/// same names and other maths makes other frames.
+impl std::fmt::Debug for Ocio {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Ocio({})", self.1)
+    }
+}
 
 impl ColourMap for Ocio {
     fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
@@ -123,7 +132,7 @@ pub fn add(
     graph: &mut GraphBuilder,
     inputs: &[NodeId],
 ) -> NodeId {
-    let map = Ocio(processor.default_cpu_processor());
+    let map = Ocio(processor.default_cpu_processor(), processor.cache_id());
     graph.add(Colour::new(map, !no_unpremult, &args.layers), inputs)
 }
 
@@ -300,7 +309,7 @@ mod tests {
     fn each_operation_refuses_what_it_cannot_do_in_one_line() {
         let v4 = ("config", "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5");
         let error =
-            |op, values: &[(&'static str, &str)]| built(op, values, &[]).err().expect("an error");
+            |op, values: &[(&'static str, &str)]| built(op, values, &[]).expect_err("an error");
         let message = error(
             &ociodisplay::OCIODISPLAY,
             &[v4, ("display", "sRGB - Dislpay")],
@@ -415,7 +424,7 @@ mod tests {
         ];
         let before = rgb.clone();
         let processor = config.get_processor("ACEScg", "ACEScct").unwrap();
-        Ocio(processor.default_cpu_processor()).apply(&mut rgb);
+        Ocio(processor.default_cpu_processor(), processor.cache_id()).apply(&mut rgb);
         for i in 0..3 {
             let mut pixel = [before[0][i], before[1][i], before[2][i]];
             cpu.apply_rgb(&mut pixel);

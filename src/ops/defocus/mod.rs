@@ -60,6 +60,7 @@ params! {
     }
 }
 
+#[derive(Debug)]
 pub struct Defocus {
     /// Depth in focus.
     pub focus: f32,
