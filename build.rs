@@ -17,7 +17,7 @@ fn main() {
     println!(
         "cargo::warning=ISA-L left out: {missing} not found on PATH. ZIP output is \
          libdeflate's alone (same pixels, different bytes from a build with ISA-L, \
-         more CPU on grainy plates; README.md, set-up). For ISA-L: apt-get install \
-         nasm autoconf automake libtool, then cargo clean -p isal-sys"
+         more CPU on grainy plates; README.md, set-up). For ISA-L: apt-get install nasm \
+         autoconf automake libtool make, then cargo clean -p isal-sys"
     );
 }
