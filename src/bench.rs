@@ -398,7 +398,7 @@ fn build() -> Value {
     json!({
         "version": env!("CARGO_PKG_VERSION"),
         "profile": if cfg!(debug_assertions) { "debug" } else { "release" },
-        "isal": cfg!(feature = "isal"),
+        "isal": cfg!(isal),
     })
 }
 

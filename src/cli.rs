@@ -24,10 +24,17 @@ macro_rules! value_enum {
     };
 }
 
+/// `--version`: the crate's version and the deflate engines built in, as
+/// ZIP output's bytes depend on them (src/io/deflate.rs).
+fn version_text() -> String {
+    let engines = crate::io::deflate::ENGINES;
+    format!("{} (deflate: {engines})", env!("CARGO_PKG_VERSION"))
+}
+
 #[derive(Parser)]
 #[command(
     name = "exrcomp",
-    version,
+    version = version_text(),
     about = "Streaming OpenEXR sequence compositor"
 )]
 pub struct Cli {

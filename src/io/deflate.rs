@@ -27,6 +27,12 @@
 //! (a blurred 4K plate: 2.3-2.9 bits, igzip 20-30% of the size; grain 6.1-6.6
 //! bits, igzip 70-80%). The trial had cost a third of the encode of a
 //! blurred plate, which libdeflate compresses whole.
+//!
+//! A build without ISA-L (`cfg(isal)` unset by build.rs: the `isal` feature
+//! off, or ISA-L's build tools missing) gives every block to libdeflate at
+//! the job's level: a valid stream of the same data, other bytes. So the same
+//! job writes the same bytes on builds with the same `ENGINES`, which
+//! `--version` and bench's record name.
 
 use libdeflater::{CompressionLvl, Compressor};
 use std::cell::RefCell;
@@ -50,6 +56,12 @@ const SMALL_BLOCK: usize = 64 << 10;
 /// zlib header: deflate with a 32 KiB window, "fastest" level hint; the two
 /// bytes read as a big-endian multiple of 31, as RFC 1950 requires.
 const ZLIB_HEADER: [u8; 2] = [0x78, 0x01];
+
+/// The deflate engines of this build, for `--version`.
+#[cfg(isal)]
+pub const ENGINES: &str = "ISA-L igzip + libdeflate";
+#[cfg(not(isal))]
+pub const ENGINES: &str = "libdeflate alone, built without ISA-L";
 
 thread_local! {
     /// This thread's libdeflate compressor and the level it was made for.
@@ -112,7 +124,7 @@ fn bound(len: usize) -> usize {
 }
 
 /// Without ISA-L: never taken, libdeflate compresses whole blocks.
-#[cfg(not(feature = "isal"))]
+#[cfg(not(isal))]
 fn igzip_blocks(_: &[u8], _: bool, _: &mut Vec<u8>) -> Option<usize> {
     None
 }
@@ -121,7 +133,7 @@ fn igzip_blocks(_: &[u8], _: bool, _: &mut Vec<u8>) -> Option<usize> {
 /// non-final blocks ending byte-aligned (igzip's full flush), so further
 /// blocks can follow; the size written, or `None` (with `out` unchanged in
 /// length) if igzip refused.
-#[cfg(feature = "isal")]
+#[cfg(isal)]
 fn igzip_blocks(data: &[u8], last: bool, out: &mut Vec<u8>) -> Option<usize> {
     use isal_sys::igzip_lib as isal;
     if data.is_empty() || u32::try_from(bound(data.len())).is_err() {
@@ -236,7 +248,7 @@ mod tests {
         }
     }
 
-    #[cfg(feature = "isal")]
+    #[cfg(isal)]
     #[test]
     fn noise_goes_through_igzip_and_smooth_data_does_not() {
         let mut noisy_start = Vec::new();
@@ -256,7 +268,7 @@ mod tests {
         );
     }
 
-    #[cfg(feature = "isal")]
+    #[cfg(isal)]
     #[test]
     fn a_half_told_smooth_by_its_sample_is_one_igzip_would_not_keep() {
         // Bytes uniform over `values` symbols: log2(values) bits of
@@ -300,7 +312,7 @@ mod tests {
         out[2..out.len() - 4].to_vec()
     }
 
-    #[cfg(feature = "isal")]
+    #[cfg(isal)]
     #[test]
     fn a_small_noisy_block_is_igzips_alone_and_a_large_one_ends_in_libdeflate() {
         // A noisy first half and a smooth second half, as a tile of grain.
@@ -332,7 +344,7 @@ mod tests {
     }
 
     /// Calls `f` with the stack grown by 0, 64 KiB, 128 KiB... `levels` times.
-    #[cfg(feature = "isal")]
+    #[cfg(isal)]
     fn at_stack_depths(levels: usize, f: &mut dyn FnMut()) {
         f();
         if levels > 0 {
@@ -350,7 +362,7 @@ mod tests {
     /// 2 of the 4K grain bench plate, whose first half came out differently
     /// at about 1 stack address in 1300 (upstream failed 10 runs in 10, first
     /// at depths 223 to 5389).
-    #[cfg(feature = "isal")]
+    #[cfg(isal)]
     #[test]
     fn igzip_writes_the_same_bytes_wherever_its_stream_lives() {
         let check = || {

@@ -7,6 +7,17 @@ use std::{
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
 
+    // exrcomp: without the tools ISA-L's build needs, build nothing and tell
+    // the crate that depends on this one (DEP_ISAL_BUILT, DEP_ISAL_MISSING
+    // through `links = "isal"`), which then leaves igzip out.
+    #[cfg(not(feature = "use-system-isal"))]
+    if let Some(missing) = missing_tools() {
+        println!("cargo:built=0");
+        println!("cargo:missing={}", missing.join(" "));
+        return;
+    }
+    println!("cargo:built=1");
+
     let is_static = cfg!(feature = "static");
     let is_shared = cfg!(feature = "shared");
     let target = std::env::var("TARGET").unwrap();
@@ -153,4 +164,37 @@ fn main() {
             .write_to_file(out)
             .unwrap();
     }
+}
+
+/// exrcomp: the programs autogen.sh, configure and make run that are not on
+/// PATH (nasm only for x86_64, whose assembly it builds; none on Windows,
+/// built by nmake).
+#[cfg(not(feature = "use-system-isal"))]
+fn missing_tools() -> Option<Vec<&'static str>> {
+    let target = |key| std::env::var(key).unwrap_or_default();
+    if target("CARGO_CFG_TARGET_OS") == "windows" {
+        return None;
+    }
+    let mut tools = vec![
+        ("autoreconf", "--version"),
+        ("automake", "--version"),
+        ("libtoolize", "--version"),
+        ("make", "--version"),
+    ];
+    if target("CARGO_CFG_TARGET_ARCH") == "x86_64" {
+        tools.insert(0, ("nasm", "-v"));
+    }
+    let missing: Vec<_> = tools
+        .into_iter()
+        .filter(|(tool, arg)| {
+            !Command::new(tool)
+                .arg(arg)
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .status()
+                .is_ok_and(|s| s.success())
+        })
+        .map(|(tool, _)| tool)
+        .collect();
+    (!missing.is_empty()).then_some(missing)
 }
