@@ -218,6 +218,11 @@ impl Samples {
 /// too: the half crate (and F16C) sets the quiet bit, which would rewrite
 /// a signalling NaN that is only copied (merge's opaque over, a mix of 1).
 fn keep_nan_payloads_up(halves: &[f16], out: &mut [f32]) {
+    // One vectorised pass to look: NaNs are rare, the fix below is scalar.
+    let nan = |h: &f16| h.to_bits() & 0x7fff > 0x7c00;
+    if !halves.iter().fold(false, |any, h| any | nan(h)) {
+        return;
+    }
     for (o, h) in out.iter_mut().zip(halves) {
         if h.is_nan() {
             let bits = h.to_bits() as u32;
@@ -230,6 +235,10 @@ fn keep_nan_payloads_up(halves: &[f16], out: &mut [f32]) {
 /// in half's keeps it, quiet or signalling (one that does not stays a
 /// quiet NaN, as the half crate makes it).
 fn keep_nan_payloads_down(values: &[f32], out: &mut [f16]) {
+    let nan = |v: &f32| v.to_bits() & 0x7fff_ffff > 0x7f80_0000;
+    if !values.iter().fold(false, |any, v| any | nan(v)) {
+        return;
+    }
     for (o, v) in out.iter_mut().zip(values) {
         let bits = v.to_bits();
         if v.is_nan() && bits & 0x1fff == 0 {
