@@ -78,7 +78,10 @@ impl Samples {
     /// Converts `range` to f32 into `out`.
     pub fn read_f32(&self, range: Range<usize>, out: &mut [f32]) {
         match self {
-            Samples::F16(v) => v[range].convert_to_f32_slice(out),
+            Samples::F16(v) => {
+                v[range.clone()].convert_to_f32_slice(out);
+                keep_nan_payloads_up(&v[range], out);
+            }
             Samples::F32(v) => out.copy_from_slice(&v[range]),
             Samples::U32(v) => out
                 .iter_mut()
@@ -211,6 +214,41 @@ impl Samples {
     }
 }
 
+/// Half NaNs as f32 NaNs with the same sign and payload, signalling ones
+/// too: the half crate (and F16C) sets the quiet bit, which would rewrite
+/// a signalling NaN that is only copied (merge's opaque over, a mix of 1).
+fn keep_nan_payloads_up(halves: &[f16], out: &mut [f32]) {
+    // One vectorised pass to look: NaNs are rare, the fix below is scalar.
+    let nan = |h: &f16| h.to_bits() & 0x7fff > 0x7c00;
+    if !halves.iter().fold(false, |any, h| any | nan(h)) {
+        return;
+    }
+    for (o, h) in out.iter_mut().zip(halves) {
+        if h.is_nan() {
+            let bits = h.to_bits() as u32;
+            *o = f32::from_bits(((bits & 0x8000) << 16) | 0x7f80_0000 | ((bits & 0x3ff) << 13));
+        }
+    }
+}
+
+/// The way back of `keep_nan_payloads_up`: an f32 NaN whose payload fits
+/// in half's keeps it, quiet or signalling (one that does not stays a
+/// quiet NaN, as the half crate makes it).
+fn keep_nan_payloads_down(values: &[f32], out: &mut [f16]) {
+    let nan = |v: &f32| v.to_bits() & 0x7fff_ffff > 0x7f80_0000;
+    if !values.iter().fold(false, |any, v| any | nan(v)) {
+        return;
+    }
+    for (o, v) in out.iter_mut().zip(values) {
+        let bits = v.to_bits();
+        if v.is_nan() && bits & 0x1fff == 0 {
+            *o = f16::from_bits(
+                (((bits >> 16) & 0x8000) | 0x7c00 | ((bits & 0x7f_ffff) >> 13)) as u16,
+            );
+        }
+    }
+}
+
 /// A plane of samples borrowed to be written: a whole plane, or the rows of
 /// one band of it.
 pub enum PlaneMut<'a> {
@@ -224,7 +262,10 @@ impl<'a> PlaneMut<'a> {
     /// (half: round to nearest even; u32: saturating, NaN to 0).
     pub fn write_f32(&mut self, range: Range<usize>, values: &[f32]) {
         match self {
-            PlaneMut::F16(v) => v[range].convert_from_f32_slice(values),
+            PlaneMut::F16(v) => {
+                v[range.clone()].convert_from_f32_slice(values);
+                keep_nan_payloads_down(values, &mut v[range]);
+            }
             PlaneMut::F32(v) => v[range].copy_from_slice(values),
             PlaneMut::U32(v) => v[range]
                 .iter_mut()
@@ -624,5 +665,28 @@ impl Rows {
             channels: self.channels.clone(),
             planes,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every half NaN, signalling or quiet, goes to f32 and back as it was.
+    #[test]
+    fn half_nans_keep_their_bits_through_f32() {
+        let nans: Vec<f16> = (0..=u16::MAX)
+            .map(f16::from_bits)
+            .filter(|h| h.is_nan())
+            .collect();
+        assert_eq!(nans.len(), 2046);
+        let plane = Samples::F16(nans.clone());
+        let mut wide = vec![0.0; nans.len()];
+        plane.read_f32(0..nans.len(), &mut wide);
+        assert!(wide.iter().all(|v| v.is_nan()));
+        let mut back = Samples::zeros(SampleType::F16, nans.len());
+        back.write_f32(0..nans.len(), &wide);
+        let n = nans.len();
+        assert_eq!(back.bytes(0..n), plane.bytes(0..n));
     }
 }

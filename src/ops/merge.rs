@@ -176,6 +176,30 @@ impl Value for MergeOp {
     ];
 }
 
+/// `w · x`: 0 where the weight `w` is 0 whatever `x` is (an infinity or a
+/// NaN under an opaque or empty alpha is not taken: 0 · ∞ would be NaN),
+/// and `x` exactly (a NaN's payload too) where it is 1.
+#[inline(always)]
+fn times(w: f32, x: f32) -> f32 {
+    if w == 0.0 {
+        0.0
+    } else if w == 1.0 {
+        x
+    } else {
+        w * x
+    }
+}
+
+/// `x + w · y`, exactly `x` (its bits: −0, a NaN's payload) where `w` is 0.
+#[inline(always)]
+fn plus(x: f32, w: f32, y: f32) -> f32 {
+    if w == 0.0 {
+        x
+    } else {
+        x + w * y
+    }
+}
+
 /// Which inputs' data windows bound the result (where it can be nonzero).
 enum Bounds {
     Union,
@@ -189,12 +213,12 @@ impl MergeOp {
     pub fn colour(self, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
         use MergeOp::*;
         match self {
-            Over => a + (1.0 - aa) * b,
-            Under => b + (1.0 - ab) * a,
-            In => a * ab,
-            Out => a * (1.0 - ab),
-            Atop => a * ab + b * (1.0 - aa),
-            Xor => a * (1.0 - ab) + b * (1.0 - aa),
+            Over => plus(a, 1.0 - aa, b),
+            Under => plus(b, 1.0 - ab, a),
+            In => times(ab, a),
+            Out => times(1.0 - ab, a),
+            Atop => plus(times(ab, a), 1.0 - aa, b),
+            Xor => plus(times(1.0 - ab, a), 1.0 - aa, b),
             Plus => a + b,
             Minus => a - b,
             From => b - a,
@@ -207,8 +231,8 @@ impl MergeOp {
             Difference => (a - b).abs(),
             Divide if b == 0.0 => 0.0,
             Divide => a / b,
-            Mask => b * aa,
-            Stencil => b * (1.0 - aa),
+            Mask => times(aa, b),
+            Stencil => times(1.0 - aa, b),
             Copy => a,
         }
     }
@@ -521,7 +545,7 @@ impl Merge {
         if !self.straight {
             return blend(self.op.colour(a, aa, b, ab), b, self.mix);
         }
-        let (a, b) = (a * aa, b * ab);
+        let (a, b) = (times(aa, a), times(ab, b));
         let premultiplied = blend(self.op.colour(a, aa, b, ab), b, self.mix);
         if ar == 0.0 {
             0.0
@@ -753,6 +777,32 @@ mod tests {
                 let (c, alpha) = reference(name, a * aa, aa, b * ab, ab);
                 (if alpha == 0.0 { 0.0 } else { c / alpha }, alpha)
             });
+        }
+    }
+
+    /// A weight of exactly 0 (an opaque or empty alpha) takes nothing of
+    /// the sample it weighs, infinite or NaN; a sample given as it is keeps
+    /// its bits (−0, a signalling NaN's payload).
+    #[test]
+    fn a_zero_weight_takes_nothing_of_an_infinity_or_nan() {
+        use MergeOp::*;
+        let (inf, snan) = (f32::INFINITY, f32::from_bits(0x7f80_2000));
+        let same = |got: f32, want: f32, what: &str| {
+            assert_eq!(got.to_bits(), want.to_bits(), "{what}: {got} where {want}")
+        };
+        for (b, ab) in [(inf, 1.0), (-inf, 0.5), (f32::NAN, inf), (0.25, -inf)] {
+            for a in [0.5, -0.0, snan, inf] {
+                same(Over.colour(a, 1.0, b, ab), a, "over, opaque A");
+                same(Under.colour(b, ab, a, 1.0), a, "under, opaque B");
+                same(Atop.colour(a, 1.0, b, 1.0), a, "atop, both opaque");
+                same(In.colour(a, ab, b, 1.0), a, "in, opaque B");
+                same(Xor.colour(b, 1.0, a, 1.0), 0.0, "xor, both opaque");
+                same(In.colour(b, ab, a, 0.0), 0.0, "in, empty B");
+                same(Out.colour(b, ab, a, 1.0), 0.0, "out, opaque B");
+                same(Mask.colour(b, 0.0, a, ab), 0.0, "mask, empty A");
+                same(Stencil.colour(b, 1.0, a, ab), 0.0, "stencil, opaque A");
+            }
+            same(Over.alpha(1.0, ab), 1.0, "over's alpha, opaque A");
         }
     }
 

@@ -360,30 +360,43 @@ impl Geometry {
         floor as i32 - r
     }
 
-    /// The source pixels output pixels `out` read (unclipped).
+    /// The source pixels output pixels `out` read: their taps, and the
+    /// display window's pixels a tap outside the data window is moved to.
     fn source(&self, filter: Filter, out: Range<i32>) -> Range<i32> {
         if out.is_empty() {
             return out;
         }
         let mut weights = Vec::new();
         let first = self.taps(filter, out.start, &mut weights);
-        let last = self.taps(filter, out.end - 1, &mut weights);
-        first..last + weights.len() as i32
+        let last = self.taps(filter, out.end - 1, &mut weights) + weights.len() as i32 - 1;
+        let clamp = |p: i32| p.clamp(self.from.start, self.from.end - 1);
+        first.min(clamp(first))..last.max(clamp(last)) + 1
     }
 
-    /// The pixels that data `data` covers once resized: its ends mapped,
-    /// floored and ceiled, in whole numbers (in floating point, 181 rows to
-    /// 91 mapped row 181 to 91.00000000000001, a row past the image).
+    /// Source pixel `p` as OpenImageIO's resize reads it from data `data`:
+    /// itself inside the data window, else moved into the display window
+    /// (its clamp wrap), `None` (black) if that is outside the data window.
+    fn read_at(&self, p: i32, data: &Range<i32>) -> Option<i32> {
+        let q = match data.contains(&p) {
+            true => p,
+            false => p.clamp(self.from.start, self.from.end - 1),
+        };
+        data.contains(&q).then_some(q)
+    }
+
+    /// Where data `data` lies once resized, as OpenImageIO's resize places
+    /// it: its start mapped and floored, its length scaled and ceiled, in
+    /// whole numbers (OpenImageIO's f32 ratio makes some a pixel longer:
+    /// 874 rows to 240 gave 241).
     fn data(&self, data: Range<i32>) -> Range<i32> {
         if data.is_empty() {
             return 0..0;
         }
         let (to, from) = (self.to.len() as i64, self.from.len() as i64);
-        let scaled = |v: i32| (v as i64 - self.from.start as i64) * to;
-        let start = scaled(data.start).div_euclid(from);
-        let end = -(-scaled(data.end)).div_euclid(from);
+        let start = ((data.start as i64 - self.from.start as i64) * to).div_euclid(from);
+        let length = -(-(data.len() as i64 * to)).div_euclid(from);
         let at = |v: i64| (self.to.start as i64 + v).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
-        at(start)..at(end)
+        at(start)..at(start + length)
     }
 }
 
@@ -536,14 +549,19 @@ impl Pass {
         }
         let geometry = self.geometry();
         let mut weights = Vec::new();
-        let (lo, hi) = (data.start as i32, data.end as i32 - 1);
+        // The data window's columns, in the picture's coordinates.
+        let data = input.x + data.start as i32..input.x + data.end as i32;
         let taps: ColumnTaps = columns
             .map(|c| {
                 let first = geometry.taps(self.filter, out.x + c as i32, &mut weights);
-                let at = (0..weights.len() as i32)
-                    .map(|i| (first + i - input.x).clamp(lo, hi) as usize)
-                    .collect();
-                (at, weights.clone())
+                weights
+                    .iter()
+                    .zip(first..)
+                    .filter(|&(&w, _)| w != 0.0)
+                    .filter_map(|(&w, p)| {
+                        Some(((geometry.read_at(p, &data)? - input.x) as usize, w))
+                    })
+                    .unzip()
             })
             .collect();
         let taps = Arc::new(taps);
@@ -551,8 +569,8 @@ impl Pass {
         taps
     }
 
-    /// Each row filtered across: output column x from its taps in the row,
-    /// clamped to the input's data window.
+    /// Each row filtered across: output column x from its taps in the row
+    /// (clamped to the display window, black outside the data window).
     fn across(&self, input: &Rows, out: &mut RowsMut) {
         let (columns, data) = (out.valid_columns(), input.valid_columns());
         if columns.is_empty() || data.is_empty() {
@@ -597,8 +615,10 @@ impl Pass {
         }
     }
 
-    /// Each output row from its taps among the first pass's rows, clamped
-    /// to the data window. The first pass's region may start left of the
+    /// Each output row from its taps among the first pass's rows (clamped
+    /// to the display window, black outside the data window, a tap of
+    /// weight 0 not read: 0 · ∞ is not taken). The first pass's region may
+    /// start left of the
     /// output's (grown by the graph's reach: `engine::region`), so its
     /// columns are offset.
     fn down(&self, across: &Rows, out: &mut RowsMut) {
@@ -628,7 +648,12 @@ impl Pass {
                 };
                 sums.fill(0.0);
                 for (i, &w) in weights.iter().enumerate() {
-                    let from = (first + i as i32).clamp(rows.start, rows.end - 1);
+                    let Some(from) = geometry.read_at(first + i as i32, &rows) else {
+                        continue;
+                    };
+                    if w == 0.0 {
+                        continue;
+                    }
                     let line = across.row_range(from).start + first_column;
                     let line = &source[line..line + columns.len()];
                     for (sum, v) in sums.iter_mut().zip(line) {

@@ -320,3 +320,40 @@ fn output_keeps_b_header_attributes_and_names_exrcomp_as_software() {
     };
     assert!(software.starts_with("exrcomp "), "Software: {software}");
 }
+
+/// Samples of `got` whose bits differ from `want`'s, over every channel.
+fn differing_bits(got: &Img, want: &Img) -> usize {
+    assert_eq!(
+        got.channels.keys().collect::<Vec<_>>(),
+        want.channels.keys().collect::<Vec<_>>()
+    );
+    got.channels
+        .iter()
+        .map(|(name, samples)| {
+            let theirs = &want.channels[name];
+            (0..samples.len())
+                .filter(|&i| samples.bits(i) != theirs.bits(i))
+                .count()
+        })
+        .sum()
+}
+
+/// An opaque top input gives itself bit for bit whatever is under it
+/// (issue 31): every half value, infinities and the 2,046 NaNs (signalling
+/// ones too) included, over, atop and in with itself and under itself.
+#[test]
+fn an_opaque_input_passes_every_half_value_bit_for_bit() {
+    let Some(path) = public_image("TestImages/AllHalfValues.exr") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let input = read_image(&path);
+    for op in ["over", "under", "atop", "in"] {
+        let out = merge(dir.path(), op, &path, &path, &[]);
+        assert_eq!(
+            differing_bits(&out, &input),
+            0,
+            "{op} of AllHalfValues with itself"
+        );
+    }
+}

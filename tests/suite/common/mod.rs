@@ -535,15 +535,27 @@ fn value_at(img: &Img, name: &str, x: i32, y: i32) -> f32 {
     }
 }
 
-/// specs/ops.md's merge formulas, premultiplied, one sample.
+/// specs/ops.md's merge formulas, premultiplied, one sample. A term whose
+/// alpha weight is exactly 0 is left out (so 0 · ∞ or 0 · NaN gives
+/// nothing), one weighed 1 is the sample itself.
 pub fn merge_formula(op: &str, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
+    let times = |w: f32, x: f32| {
+        if w == 0.0 {
+            0.0
+        } else if w == 1.0 {
+            x
+        } else {
+            w * x
+        }
+    };
+    let plus = |x: f32, w: f32, y: f32| if w == 0.0 { x } else { x + w * y };
     match op {
-        "over" => a + (1.0 - aa) * b,
-        "under" => b + (1.0 - ab) * a,
-        "in" => a * ab,
-        "out" => a * (1.0 - ab),
-        "atop" => a * ab + b * (1.0 - aa),
-        "xor" => a * (1.0 - ab) + b * (1.0 - aa),
+        "over" => plus(a, 1.0 - aa, b),
+        "under" => plus(b, 1.0 - ab, a),
+        "in" => times(ab, a),
+        "out" => times(1.0 - ab, a),
+        "atop" => plus(times(ab, a), 1.0 - aa, b),
+        "xor" => plus(times(1.0 - ab, a), 1.0 - aa, b),
         "plus" => a + b,
         "minus" => a - b,
         "from" => b - a,
@@ -555,8 +567,8 @@ pub fn merge_formula(op: &str, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
         "difference" => (a - b).abs(),
         "divide" if b == 0.0 => 0.0,
         "divide" => a / b,
-        "mask" => b * aa,
-        "stencil" => b * (1.0 - aa),
+        "mask" => times(aa, b),
+        "stencil" => times(1.0 - aa, b),
         "copy" => a,
         _ => panic!("unknown operator {op}"),
     }
