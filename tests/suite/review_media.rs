@@ -455,6 +455,13 @@ fn options_that_do_not_fit_the_format_are_refused() {
         ("x.png", &["--compression", "zip"], "EXR outputs"),
         ("x.png", &["--burn-in", "{shot}"], "unknown field {shot}"),
         ("x.jpg", &["--quality", "101"], "101"),
+        // Float samples are written as they are: no transfer (it had been
+        // ignored silently).
+        (
+            "x.tif",
+            &["--transfer", "none", "--bits", "float"],
+            "--bits float writes the scene-linear values as they are",
+        ),
     ] {
         let output = out(name);
         refused(
@@ -502,21 +509,38 @@ fn a_job_files_write_node_takes_the_review_options() {
     refused(&["run", s(&job)], "job.toml");
 }
 
-/// A JPEG result over 65535 pixels a side (JPEG's limit) is refused when
-/// the frame is planned, naming the input, the frame and the limit, with
-/// nothing written: it had failed in the writer (exit 4) naming no frame.
+/// A JPEG result over 65500 pixels a side (libjpeg's JPEG_MAX_DIMENSION:
+/// oiiotool and Pillow refuse wider files) is refused when the frame is
+/// planned, naming the input, the frame and the limit, with nothing
+/// written: 65501-65535 had been written, and wider failed in the writer
+/// (exit 4) naming no frame. 65500 is written, and a peer reads it.
 #[test]
-fn a_jpeg_past_65535_pixels_a_side_is_refused_when_planned() {
+fn a_jpeg_past_65500_pixels_a_side_is_refused_when_planned() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("wide.exr");
-    crate::common::generate(&input, "bg", (65536, 2), &[]);
-    let output = dir.path().join("wide.jpg");
-    let out = run(&["transcode", s(&input), "-o", s(&output)]);
-    let message = stderr(&out);
-    assert_eq!(out.status.code(), Some(3), "{message}");
-    assert_eq!(message.trim().lines().count(), 1, "{message}");
-    for says in ["frame 1", "wide.exr", "65536x2", "65535"] {
-        assert!(message.contains(says), "{says}: {message}");
+    for width in [65501, 65536] {
+        let input = dir.path().join(format!("wide{width}.exr"));
+        crate::common::generate(&input, "bg", (width, 2), &[]);
+        let output = dir.path().join("wide.jpg");
+        let out = run(&["transcode", s(&input), "-o", s(&output)]);
+        let message = stderr(&out);
+        assert_eq!(out.status.code(), Some(3), "{message}");
+        assert_eq!(message.trim().lines().count(), 1, "{message}");
+        let size = format!("{width}x2");
+        for says in ["frame 1", &format!("wide{width}.exr"), &size, "65500"] {
+            assert!(message.contains(says), "{says}: {message}");
+        }
+        assert!(!output.exists());
     }
-    assert!(!output.exists());
+    let input = dir.path().join("widest.exr");
+    crate::common::generate(&input, "bg", (65500, 2), &[]);
+    let output = dir.path().join("widest.jpg");
+    crate::common::ok(&["transcode", s(&input), "-o", s(&output), "-q"]);
+    if let Some(oiiotool) = peer("oiiotool") {
+        let info = Command::new(oiiotool)
+            .args(["--info", s(&output)])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&info.stdout);
+        assert!(info.status.success() && text.contains("65500 x"), "{text}");
+    }
 }
