@@ -368,7 +368,13 @@ fn write_jpeg(
         strip: RefCell::new((0, Vec::new())),
         error: RefCell::new(None),
     };
-    let encoder = jpeg_encoder::Encoder::new(out, quality);
+    let mut encoder = jpeg_encoder::Encoder::new(out, quality);
+    // Chroma halved both ways below quality 100, as libjpeg (oiiotool,
+    // cjpeg) does at every quality: the crate's 4:4:4 from quality 90 made
+    // review frames 1.4x oiiotool's at the same quality.
+    if quality < 100 {
+        encoder.set_sampling_factor(jpeg_encoder::SamplingFactor::R_4_2_0);
+    }
     let encoded = encoder.encode_image(&image);
     if let Some(e) = image.error.into_inner() {
         return Err(e);
