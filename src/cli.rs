@@ -39,7 +39,7 @@ fn version_text() -> String {
 )]
 pub struct Cli {
     /// Worker threads (default: one per core).
-    #[arg(long, global = true, help_heading = "Run control", value_parser = crate::params::parse_threads)]
+    #[arg(long, global = true, help_heading = "Run control", allow_negative_numbers = true, value_parser = crate::params::parse_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -59,6 +59,8 @@ pub enum Command {
         /// Output file or sequence.
         #[arg(value_hint = ValueHint::FilePath, short, long)]
         output: String,
+        #[command(flatten)]
+        part: PartArgs,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -113,6 +115,8 @@ pub enum Command {
         #[arg(long, value_parser = parse_level)]
         level: Option<exr::math::Vec2<usize>>,
         #[command(flatten)]
+        part: PartArgs,
+        #[command(flatten)]
         run: RunArgs,
     },
     /// Describe EXR files as exrheader does and check that every chunk decodes.
@@ -133,10 +137,10 @@ pub enum Command {
         #[arg(long, default_value_t = 24, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=100_000))]
         length: usize,
         /// Plate width in pixels.
-        #[arg(long, default_value_t = 1920)]
+        #[arg(long, default_value_t = 1920, allow_negative_numbers = true)]
         width: usize,
         /// Plate height in pixels.
-        #[arg(long, default_value_t = 1080)]
+        #[arg(long, default_value_t = 1080, allow_negative_numbers = true)]
         height: usize,
         #[command(flatten)]
         run: RunArgs,
@@ -154,10 +158,10 @@ pub enum Command {
         #[arg(long, value_enum, default_value = "bg")]
         kind: crate::generate::PlateKind,
         /// Width in pixels.
-        #[arg(long, default_value_t = 1920)]
+        #[arg(long, default_value_t = 1920, allow_negative_numbers = true)]
         width: usize,
         /// Height in pixels.
-        #[arg(long, default_value_t = 1080)]
+        #[arg(long, default_value_t = 1080, allow_negative_numbers = true)]
         height: usize,
         /// Data window origin, as X,Y (display window stays at 0,0).
         #[arg(long, value_parser = parse_origin, default_value = "0,0", allow_hyphen_values = true)]
@@ -208,7 +212,7 @@ pub struct BenchArgs {
     #[arg(long, value_hint = ValueHint::FilePath)]
     pub baseline: Option<PathBuf>,
     /// Percent of the baseline's median a job may be slower by.
-    #[arg(long, default_value_t = 5.0, value_parser = parse_tolerance)]
+    #[arg(long, default_value_t = 5.0, allow_negative_numbers = true, value_parser = parse_tolerance)]
     pub tolerance: f64,
     /// Draw the runs per job (and the baseline's) to this chart: FILE.svg
     /// or FILE.png.
@@ -269,7 +273,7 @@ impl Farm {
 #[derive(Args)]
 pub struct FarmJob {
     /// All the frames, as --frames takes them.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub frames: String,
     /// Frames per task.
     #[arg(long, default_value_t = 10)]
@@ -311,20 +315,35 @@ pub struct LayerArgs {
     /// multi-view file the channels `VIEW.R` (`layer.VIEW.R`).
     #[arg(long)]
     pub view: Option<String>,
-    /// Part (name or index) of inputs given without `:PART`.
-    #[arg(long)]
-    pub part: Option<String>,
+    #[command(flatten)]
+    pub part: PartArgs,
     /// Level of mipmapped inputs (N), or ripmapped ones (X,Y; N is N,N) to
     /// read instead of the full resolution (level 0).
     #[arg(long, value_parser = parse_level)]
     pub level: Option<exr::math::Vec2<usize>>,
 }
 
+/// The part of a multi-part input: every command reading EXR inputs takes
+/// it, with or without layers.
+#[derive(Args, Clone, Default)]
+#[command(next_help_heading = "Layers, views and parts")]
+pub struct PartArgs {
+    /// Part (name or index) of inputs given without `:PART`.
+    #[arg(long)]
+    pub part: Option<String>,
+}
+
 /// Options every job that writes files takes.
 #[derive(Args, Clone)]
 pub struct RunArgs {
     /// Frames: A-B, A-B:STEP, or a comma list (default: those on disk).
-    #[arg(help_heading = "Frames and sequences", long)]
+    /// Frame numbers may be negative (`--frames -3-2`), so a value starting
+    /// with `-` is the frames, not an option.
+    #[arg(
+        help_heading = "Frames and sequences",
+        long,
+        allow_hyphen_values = true
+    )]
     pub frames: Option<String>,
     /// Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
     /// (default: the input's whose header the output keeps; each command's
@@ -334,12 +353,12 @@ pub struct RunArgs {
     /// libdeflate's effort for ZIP and ZIPS output, 1 (fastest) to 12
     /// (smallest); noisy low-byte halves always take ISA-L's fastest level.
     /// The default 2 writes files within 2.5% of OpenEXR's size.
-    #[arg(help_heading = "Output", long, default_value_t = crate::io::zip::DEFAULT_LEVEL, value_parser = clap::value_parser!(u8).range(1..=12))]
+    #[arg(help_heading = "Output", long, default_value_t = crate::io::zip::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
     /// DWAA and DWAB output's compression level, written as the file's
     /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as
     /// OpenEXR's).
-    #[arg(help_heading = "Output", long, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
+    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
     pub dwa_level: Option<f32>,
     /// Write tiled files with tiles of WxH pixels (N: NxN), one level
     /// (default: tiles as the background's if it is tiled, else scanlines).
@@ -375,10 +394,10 @@ pub struct RunArgs {
     pub timecode: Option<crate::io::timecode::TimecodeSpec>,
     /// Frame rate, written as framesPerSecond: N, N/D (24000/1001) or an
     /// NTSC rate as 23.976 (default: the input's).
-    #[arg(help_heading = "Output", long, value_name = "RATE", value_parser = crate::io::attributes::parse_rational)]
+    #[arg(help_heading = "Output", long, value_name = "RATE", allow_hyphen_values = true, value_parser = crate::io::attributes::parse_fps)]
     pub fps: Option<exr::meta::attribute::Rational>,
     /// JPEG output's quality, 1 to 100 (default 90).
-    #[arg(help_heading = "Review media (.png, .jpg, .tif outputs)", long, value_parser = clap::value_parser!(u8).range(1..=100))]
+    #[arg(help_heading = "Review media (.png, .jpg, .tif outputs)", long, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=100))]
     pub quality: Option<u8>,
     /// Bits per sample: PNG 8 or 16, TIFF 8, 16 or float (scene-linear, as
     /// it is); JPEG 8 (default 8).
@@ -438,7 +457,7 @@ pub struct RunArgs {
     pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
-    #[arg(help_heading = "Frames and sequences", long, value_parser = parse_rows)]
+    #[arg(help_heading = "Frames and sequences", long, allow_hyphen_values = true, value_parser = parse_rows)]
     pub rows: Option<(i32, i32)>,
     /// Run the operation on every part of a multi-part input instead of one,
     /// each part keeping its own channels, windows and attributes; for
@@ -448,7 +467,7 @@ pub struct RunArgs {
     /// Run the whole graph at this fraction of the size (0.5: half), for
     /// previews: each input resized as it is read (resize's box filter),
     /// each operation's lengths in pixels (radii, regions, shifts) scaled.
-    #[arg(help_heading = "Output", long, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
+    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
     pub proxy_scale: Option<f32>,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
@@ -599,9 +618,10 @@ fn subcommand(op: &'static Operation) -> clap::Command {
                 .help("Inputs and output are unpremultiplied (straight) colour"),
         );
     }
-    if op.layers {
-        command = LayerArgs::augment_args(command);
-    }
+    command = match op.layers {
+        true => LayerArgs::augment_args(command),
+        false => PartArgs::augment_args(command),
+    };
     // After the shared options, whose own doc would be taken as the about.
     RunArgs::augment_args(command).about(op.about)
 }
@@ -634,7 +654,10 @@ impl FromArgMatches for Invocation {
             straight: op.straight && m.get_flag("straight"),
             layers: match op.layers {
                 true => LayerArgs::from_arg_matches(m)?,
-                false => LayerArgs::default(),
+                false => LayerArgs {
+                    part: PartArgs::from_arg_matches(m)?,
+                    ..LayerArgs::default()
+                },
             },
             run: RunArgs::from_arg_matches(m)?,
         })

@@ -113,9 +113,17 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             }
             run_job(&job, "run", &run, summary)
         }
-        Command::Flatten { input, output, run } => {
+        Command::Flatten {
+            input,
+            output,
+            part,
+            run,
+        } => {
             let graph = Graph::identity();
-            let layers = LayerArgs::default();
+            let layers = LayerArgs {
+                part,
+                ..LayerArgs::default()
+            };
             let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
             run_job(&job, "flatten", &run, summary)
         }
@@ -137,11 +145,13 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             input,
             output,
             level,
+            part,
             run,
         } => {
             let graph = Graph::identity();
             let layers = LayerArgs {
                 level,
+                part,
                 ..LayerArgs::default()
             };
             let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
@@ -274,7 +284,10 @@ pub(crate) fn input_job(
         let pattern = FramePattern::parse(path)?;
         times.push(time.pinned(&pattern)?);
         inputs.push(pattern);
-        parts.push(part.map(str::to_string).or_else(|| layers.part.clone()));
+        parts.push(
+            part.map(str::to_string)
+                .or_else(|| layers.part.part.clone()),
+        );
     }
     let output = FramePattern::output(output)?;
     let mut attributes = edits(run)?;
@@ -307,7 +320,7 @@ pub(crate) fn input_job(
         &graph,
         &resolved.frames,
     );
-    let graph = luminance_chroma::colour_inputs(graph, &luminance);
+    let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
     let job = Job {
         merged: vec![Vec::new(); inputs.len()],
         inputs,
@@ -392,7 +405,7 @@ fn luminance_inputs(
             };
             let header = read
                 .map(|part| file.header(part))
-                .find(|header| luminance_chroma::is_luminance(header))?;
+                .find(|header| luminance_chroma::is_luminance(header, layers.view.as_deref()))?;
             Some(luminance_chroma::luminance_weights(
                 header.shared_attributes.chromaticities.as_ref(),
             ))
@@ -637,12 +650,12 @@ pub(crate) fn run_job(
     let (reads, mut writes) = job.files();
     writes.extend(slate.iter().flat_map(|slate| slate.files().1));
     refuse_overwriting(reads.iter().cloned(), writes.iter().cloned())?;
-    if !run.quiet {
-        for warning in &summary.warnings {
-            eprintln!("exrcomp: warning: {warning}");
-        }
-    }
     if run.dry_run {
+        if !run.quiet {
+            for warning in &summary.warnings {
+                eprintln!("exrcomp: warning: {warning}");
+            }
+        }
         let (mut bound, mut others) = (0, Vec::new());
         let media = job.media.as_ref().map(|r| r.media.format);
         for sources in &job.frames {
@@ -651,7 +664,7 @@ pub(crate) fn run_job(
                 others.push(plans[0].output.clone());
             }
             for plan in plans {
-                bound = memory_bound(&plan, &job.graph).max(bound);
+                bound = memory_bound(&plan, plan.graph(job)).max(bound);
             }
         }
         if !run.quiet {
@@ -862,6 +875,11 @@ pub(crate) fn run_with_progress(
     let events = Progress {
         report: &report,
         frame_label: |f| job.frame_label(f),
+        warnings: match run.quiet {
+            true => Vec::new(),
+            false => summary.warnings.clone(),
+        },
+        warned: std::sync::Once::new(),
         summary: Mutex::new(summary),
     };
     let stages = pipeline::run(job, &events)?;
@@ -879,11 +897,27 @@ pub(crate) fn run_with_progress(
 struct Progress<'a, L> {
     report: &'a Report,
     frame_label: L,
+    /// Printed with the first frame done (`warn_once`).
+    warnings: Vec<String>,
+    warned: std::sync::Once,
     summary: Mutex<Summary>,
+}
+
+impl<L> Progress<'_, L> {
+    /// The run's warnings, printed once a frame is done: a run that fails
+    /// before (a damaged first frame) says only its error, in one line.
+    fn warn_once(&self) {
+        self.warned.call_once(|| {
+            for warning in &self.warnings {
+                self.report.warning(warning);
+            }
+        });
+    }
 }
 
 impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     fn written(&self, plan: &FramePlan) {
+        self.warn_once();
         let mut summary = self.summary.lock().expect("not poisoned");
         summary.frames += 1;
         summary.pixels += plan.pixels() as u64;
@@ -891,6 +925,7 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
     }
 
     fn kept(&self, frame: i64) {
+        self.warn_once();
         self.summary.lock().expect("not poisoned").kept.push(frame);
         self.report.frame_done();
     }

@@ -5,7 +5,7 @@
 use crate::cli::parse_tile;
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
-use crate::io::attributes::{parse_attrib, parse_erase, parse_rational, Attrib};
+use crate::io::attributes::{parse_attrib, parse_erase, parse_fps, Attrib};
 use crate::io::burn_in::Corner;
 use crate::io::media::{Bits, Transfer};
 use crate::io::sequence::{split_time, InputTime};
@@ -546,7 +546,7 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
             Some(v) => Some(parse_spec(&string(at, v)?).or_else(|m| at.error(v.span(), m))?),
             None => None,
         },
-        fps: option(at, out, "fps", parse_rational)?,
+        fps: option(at, out, "fps", parse_fps)?,
         quality: option(at, out, "quality", |t| {
             t.parse()
                 .ok()

@@ -94,6 +94,15 @@ impl Report {
         }
     }
 
+    /// "exrcomp: warning: TEXT", above the progress bar, with `json` too.
+    pub fn warning(&self, text: &str) {
+        let line = format!("exrcomp: warning: {text}");
+        match self.bar.is_hidden() {
+            true => eprintln!("{line}"),
+            false => self.bar.suspend(|| eprintln!("{line}")),
+        }
+    }
+
     pub fn elapsed(&self) -> f64 {
         self.started.elapsed().as_secs_f64()
     }

@@ -4,7 +4,7 @@
 //! `commands::run_job` prints each once, unless `--quiet`.
 
 use super::graph::{box_text, Display, Node};
-use super::plan::{HeaderBase, Job, Source};
+use super::plan::{plan_parts, FrameSources, HeaderBase, Job, Source};
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -17,6 +17,16 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
     let Some(first) = job.frames.first() else {
         return Vec::new();
     };
+    let mut warnings = assumed(job, texts, first);
+    if job.all_parts {
+        warnings.extend(carried_parts(job, first));
+    }
+    warnings
+}
+
+/// The warnings of the first frame's inputs (with `--all-parts`, of the
+/// first part).
+fn assumed(job: &Job, texts: &[String], first: &FrameSources) -> Vec<String> {
     let headers: Option<Vec<Header>> = (0..job.inputs.len())
         .map(|i| {
             let Source::Frame(frame) = first.inputs[i] else {
@@ -122,6 +132,32 @@ fn display_windows(job: &Job, texts: &[String], headers: &[Header]) -> Vec<Strin
                 box_text(display(kept)),
                 texts[kept]
             )
+        })
+        .collect()
+}
+
+/// With `--all-parts`, the parts of the first frame the operations cannot
+/// apply to, which are written unchanged: one note each, with the reason.
+fn carried_parts(job: &Job, first: &FrameSources) -> Vec<String> {
+    let Ok(plans) = plan_parts(job, first) else {
+        return Vec::new();
+    };
+    let headers = plans[0].every_part.clone().unwrap_or_default();
+    let name = |part: usize| match headers
+        .get(part)
+        .and_then(|h| h.own_attributes.layer_name.as_ref())
+    {
+        Some(name) => format!("part {part} ('{name}')"),
+        None => format!("part {part}"),
+    };
+    (plans.iter().enumerate())
+        .filter_map(|(part, plan)| {
+            let refusal = plan.carried_as_is.as_ref()?;
+            Some(format!(
+                "{} is written unchanged: the operation does not apply to it ({})",
+                name(part),
+                refusal.message
+            ))
         })
         .collect()
 }

@@ -54,9 +54,31 @@ fn kind(channels: &[ChannelDescription]) -> Kind {
     }
 }
 
-/// Whether a part's channels are luminance/chroma or luminance only.
-pub fn is_luminance(header: &Header) -> bool {
-    kind(&header.channels.list) != Kind::Rgb
+/// Whether a part's channels are luminance/chroma or luminance only, or
+/// those of `view` (a single-part multi-view file's `right.Y`) are.
+pub fn is_luminance(header: &Header, view: Option<&str>) -> bool {
+    let channels = &header.channels.list;
+    kind(channels) != Kind::Rgb || grey_view(channels, view).is_some()
+}
+
+/// The channel prefix of `view` ("right.") when its channels are luminance
+/// only: `right.Y` without `right.R`, `G`, `B` or chroma. Only a view's:
+/// another layer's `Y` may be a vector's (`N.Y`).
+fn grey_view(channels: &[ChannelDescription], view: Option<&str>) -> Option<String> {
+    let prefix = format!("{}.", view?);
+    let has = |name: &str| {
+        channels
+            .iter()
+            .any(|c| c.name.is(&format!("{prefix}{name}")))
+    };
+    let colour = ["R", "G", "B", "RY", "BY"].iter().any(|n| has(n));
+    (has("Y") && !colour).then_some(prefix)
+}
+
+/// The sample type of channel `name` of `channels`, which has it.
+fn type_of(channels: &[ChannelDescription], name: &str) -> SampleType {
+    let found = channels.iter().find(|c| c.name.is(name));
+    found.expect("channel present").sample_type
 }
 
 /// OpenEXR's luminance weights (computeYw) for `chromaticities` (Rec. 709
@@ -97,6 +119,26 @@ pub fn luminance_weights(chromaticities: Option<&Chromaticities>) -> [f32; 3] {
 pub struct FromLuminance {
     /// Luminance weights of R, G, B.
     pub weights: [f32; 3],
+    /// The view read (`--view`): its luminance-only channels (`right.Y`)
+    /// become grey too.
+    pub view: Option<String>,
+}
+
+impl FromLuminance {
+    /// The channel prefixes made RGB, each with the type of its colour:
+    /// the unnamed layer's (luminance/chroma or grey), and the view's.
+    fn converted(&self, input: &[ChannelDescription]) -> Vec<(String, SampleType)> {
+        let mut prefixes = match kind(input) {
+            Kind::Rgb => Vec::new(),
+            Kind::Chroma => vec![(String::new(), SampleType::F16)],
+            Kind::Grey => vec![(String::new(), type_of(input, "Y"))],
+        };
+        if let Some(prefix) = grey_view(input, self.view.as_deref()) {
+            let sample_type = type_of(input, &format!("{prefix}Y"));
+            prefixes.push((prefix, sample_type));
+        }
+        prefixes
+    }
 }
 
 impl Op for FromLuminance {
@@ -110,24 +152,23 @@ impl Op for FromLuminance {
 
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
         let input = inputs[0];
-        let colour_type = match kind(input) {
-            Kind::Rgb => return input.to_vec(),
-            Kind::Chroma => SampleType::F16,
-            Kind::Grey => {
-                input
-                    .iter()
-                    .find(|c| c.name.is("Y"))
-                    .expect("Y present")
-                    .sample_type
-            }
+        let converted = self.converted(input);
+        let replaced = |name: &str| {
+            (converted.iter()).any(|(prefix, _)| {
+                let own = name.strip_prefix(prefix.as_str());
+                own == Some("Y") || (prefix.is_empty() && ["RY", "BY"].contains(&name))
+            })
         };
         let mut channels: Vec<ChannelDescription> = input
             .iter()
-            .filter(|c| !["Y", "RY", "BY"].iter().any(|n| c.name.is(n)))
+            .filter(|c| !replaced(&c.name.utf8()))
             .cloned()
             .collect();
-        for name in ["R", "G", "B"] {
-            channels.push(ChannelDescription::named(name, colour_type));
+        for (prefix, colour_type) in &converted {
+            for name in ["R", "G", "B"] {
+                let name = format!("{prefix}{name}");
+                channels.push(ChannelDescription::named(name.as_str(), *colour_type));
+            }
         }
         channels
     }
@@ -169,18 +210,23 @@ impl Op for FromLuminance {
         }
         match mode {
             Kind::Rgb => {}
-            Kind::Grey => grey(input, out),
+            Kind::Grey => grey(input, out, ""),
             Kind::Chroma => Chroma::new(input, self.weights).fill(out),
+        }
+        if let Some(prefix) = grey_view(&input.channels, self.view.as_deref()) {
+            grey(input, out, &prefix);
         }
         Ok(())
     }
 }
 
-/// R = G = B = Y, sample for sample.
-fn grey(input: &Rows, out: &mut RowsMut) {
-    let luminance = input.channel_index("Y").expect("Y present");
+/// R = G = B = Y, sample for sample, of the channels named `prefix`...
+fn grey(input: &Rows, out: &mut RowsMut, prefix: &str) {
+    let luminance = input.channel_index(&format!("{prefix}Y"));
+    let luminance = luminance.expect("Y present");
     for name in ["R", "G", "B"] {
-        let c = out.channel_index(name).expect("colour channel");
+        let c = out.channel_index(&format!("{prefix}{name}"));
+        let c = c.expect("colour channel");
         for y in out.y..out.end() {
             let range = out.row_range(y);
             out.planes[c]
@@ -479,12 +525,15 @@ fn desaturate(p: Rgba, f: f32, [wr, wg, wb]: [f32; 3]) -> Rgba {
 
 /// `graph` with a `FromLuminance` node after each input node `luminance`
 /// marks (with its luminance weights), which its readers read instead.
-pub fn colour_inputs(graph: Graph, luminance: &[Option<[f32; 3]>]) -> Graph {
+pub fn colour_inputs(graph: Graph, luminance: &[Option<[f32; 3]>], view: Option<&str>) -> Graph {
     if luminance.iter().all(Option::is_none) {
         return graph;
     }
     graph.after_inputs(|builder, i, input| match luminance.get(i) {
-        Some(&Some(weights)) => builder.add(FromLuminance { weights }, &[input]),
+        Some(&Some(weights)) => {
+            let view = view.map(str::to_string);
+            builder.add(FromLuminance { weights, view }, &[input])
+        }
         _ => input,
     })
 }

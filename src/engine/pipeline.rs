@@ -291,12 +291,12 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
     // Review media have no chunks to pass.
     let pass = match job.media {
         Some(_) => None,
-        None => PassThrough::find(&job.graph, plan),
+        None => PassThrough::find(plan.graph(job), plan),
     };
     // Per input, its columns, whether it is read bottom-up, and the rows
     // read so far (none yet: an empty range at its first row).
     let mut fed: Vec<((i32, usize), bool, Range<i32>)> = (0..plan.inputs.len())
-        .map(|i| match job.graph.input_node(i) {
+        .map(|i| match plan.graph(job).input_node(i) {
             Some(n) => {
                 let (rect, upward) = (plan.regions.rect(n), plan.regions.upward(n));
                 let first = match upward {
@@ -322,7 +322,7 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         // Each strip reads the rows of the span not read yet.
         let regions: Vec<Region> = fed
             .iter_mut()
-            .zip(plan.input_spans(&job.graph, rows.end))
+            .zip(plan.input_spans(plan.graph(job), rows.end))
             .map(|((columns, upward, done), span)| {
                 let read = match upward {
                     true => span.start.min(done.start)..done.start,
@@ -336,7 +336,9 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         let (strips, passed) = rayon::scope(|_| {
             planted_panic(Stage::Decode, plan.frame);
             match &pass {
-                Some(pass) => pass.decode(plan, &job.graph, &mut cursors, &regions, rows.clone()),
+                Some(pass) => {
+                    pass.decode(plan, plan.graph(job), &mut cursors, &regions, rows.clone())
+                }
                 None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
             }
         })?;
@@ -405,7 +407,7 @@ fn compose_stage(
                 (lines, across) = (grid.block.y(), grid.blocks.x());
                 passed.clear();
                 composer = Some(Composer::new(
-                    &job.graph,
+                    plan.graph(job),
                     &plan.regions,
                     &plan.channels,
                     &plan.windows,

@@ -223,9 +223,23 @@ pub struct FramePlan {
     pub every_part: Option<Vec<Header>>,
     /// What made the frame (`fingerprint.rs`), written into every part.
     pub fingerprint: String,
+    /// With `--all-parts`, why the operations cannot apply to this part (a
+    /// blur of a part without colour): it is streamed through an identity
+    /// graph instead, unchanged, as a part not worked on is.
+    pub carried_as_is: Option<Error>,
 }
 
 impl FramePlan {
+    /// The graph this plan streams: the job's, or for a part carried as it
+    /// is, an identity.
+    pub fn graph<'a>(&self, job: &'a Job) -> &'a Graph {
+        static IDENTITY: std::sync::OnceLock<Graph> = std::sync::OnceLock::new();
+        match self.carried_as_is {
+            Some(_) => IDENTITY.get_or_init(Graph::identity),
+            None => &job.graph,
+        }
+    }
+
     /// The parts to write: the header's input's parts with the written part
     /// in its place, or the written part alone.
     pub fn output_parts(&self) -> Parts<'_> {
@@ -301,7 +315,7 @@ impl FramePlan {
 /// that cannot be planned is an error naming it.
 pub fn plan_parts(job: &Job, sources: &FrameSources) -> Result<Vec<FramePlan>> {
     if !job.all_parts {
-        return Ok(vec![plan_frame(job, sources, None)?]);
+        return Ok(vec![plan_frame(job, sources, None, &job.graph)?]);
     }
     let at = sources.inputs[0].file_frame();
     let headers = ExrFile::open(&job.inputs[0].path(at), job.frame_label(at))?
@@ -309,9 +323,22 @@ pub fn plan_parts(job: &Job, sources: &FrameSources) -> Result<Vec<FramePlan>> {
         .headers;
     let mut plans = (0..headers.len())
         .map(|part| {
-            plan_frame(job, sources, Some(part)).map_err(|e| in_part(e, part, &headers[part]))
+            let plan = plan_frame(job, sources, Some(part), &job.graph);
+            plan.map_err(|e| in_part(e, part, &headers[part]))
         })
         .collect::<Result<Vec<_>>>()?;
+    // A part carried as it is keeps its display window: refused where the
+    // others' change (a resize, `--proxy-scale`), as OpenEXR's parts share one.
+    let display = |p: &FramePlan| p.header.shared_attributes.display_window;
+    if let Some(p) = plans.iter().position(|p| p.carried_as_is.is_some()) {
+        if plans
+            .iter()
+            .any(|other| display(other) != display(&plans[p]))
+        {
+            let refusal = plans.swap_remove(p).carried_as_is.expect("carried");
+            return Err(in_part(refusal, p, &headers[p]));
+        }
+    }
     plans[0].every_part = Some(plans.iter().map(|p| p.header.clone()).collect());
     Ok(plans)
 }
@@ -327,9 +354,15 @@ fn in_part(error: Error, part: usize, header: &Header) -> Error {
     Error::new(error.kind, format!("part {part}{name}: {}", error.message))
 }
 
-/// Opens the inputs of `sources.frame` and plans its output; `part` forces
-/// the part of input 0 read (`--all-parts`).
-fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<FramePlan> {
+/// Opens the inputs of `sources.frame` and plans its output through
+/// `graph`; `part` forces the part of input 0 read (`--all-parts`), and a
+/// part an operation refuses is then carried as it is (`carry_as_is`).
+fn plan_frame(
+    job: &Job,
+    sources: &FrameSources,
+    part: Option<usize>,
+    graph: &Graph,
+) -> Result<FramePlan> {
     let forced = part;
     let frame = sources.frame;
     let label = job.frame_label(frame);
@@ -373,13 +406,12 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         _ => levels[i].window(header_of(i)),
     };
 
-    let graph: &Graph = &job.graph;
     // The conversion to RGB is set up from the first frame (of each part,
     // with --all-parts: `commands::luminance_inputs`); a later frame that is
     // luminance where it was not would be read as its Y, RY, BY channels.
     if let Some(i) = (0..inputs.len()).find(|&i| {
         deep[i].is_none()
-            && luminance_chroma::is_luminance(header_of(i))
+            && luminance_chroma::is_luminance(header_of(i), job.view.as_deref())
             && graph.reads_unconverted(i)
     }) {
         return Err(inputs[i].error(
@@ -405,7 +437,13 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         {
             let lists: Vec<&[ChannelDescription]> =
                 args.iter().map(|&n| channels[n].as_slice()).collect();
-            op.check(&lists).map_err(|m| located(node.locate(m)))?;
+            if let Err(message) = op.check(&lists) {
+                let refusal = located(node.locate(message));
+                return match forced {
+                    Some(_) => carry_as_is(job, sources, forced, refusal),
+                    None => Err(refusal),
+                };
+            }
         }
     }
     // Subsampled channels are carried, or turned into RGB first
@@ -789,7 +827,22 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
         carried_headers,
         every_part: None,
         fingerprint,
+        carried_as_is: None,
     })
+}
+
+/// `--all-parts` on a part the operations refuse (`refusal`: no colour to
+/// blur, no vectors): the part planned through an identity graph, so it is
+/// written unchanged, as the parts a one-part run does not work on are.
+fn carry_as_is(
+    job: &Job,
+    sources: &FrameSources,
+    part: Option<usize>,
+    refusal: Error,
+) -> Result<FramePlan> {
+    let mut plan = plan_frame(job, sources, part, &Graph::identity())?;
+    plan.carried_as_is = Some(refusal);
+    Ok(plan)
 }
 
 /// The output's grid of blocks (scanline blocks or tiles) and their place

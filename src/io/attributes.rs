@@ -318,6 +318,15 @@ pub fn parse_rational(text: &str) -> Result<Rational, String> {
     Ok((i32::try_from(n).map_err(|_| bad())?, d as u32))
 }
 
+/// `--fps`: a rational (`parse_rational`) above zero.
+pub fn parse_fps(text: &str) -> Result<Rational, String> {
+    let fps = parse_rational(text)?;
+    match fps.0 > 0 {
+        true => Ok(fps),
+        false => Err(format!("a frame rate is above 0, not {text}")),
+    }
+}
+
 fn n_over(d: &str) -> Option<u32> {
     d.parse::<u32>().ok().filter(|&d| d > 0)
 }
@@ -486,7 +495,8 @@ impl Edits {
         let code = match spec {
             TimecodeSpec::Start { code, at } => {
                 let at = at.ok_or("a --timecode start without its frame (internal)")?;
-                Counting::new(fps, code.drop_frame)?.shift(&code, frame.wrapping_sub(at))?
+                Counting::new(fps, code.drop_frame)?
+                    .shift(&code, i128::from(frame) - i128::from(at))?
             }
             TimecodeSpec::Shift(frames) => {
                 let Some(AttributeValue::TimeCode(old)) = find(header, b"timeCode") else {
@@ -495,7 +505,7 @@ impl Edits {
                          none: give a start (--timecode 01:00:00:00)"
                     ));
                 };
-                Counting::new(fps, old.drop_frame)?.shift(&old, frames)?
+                Counting::new(fps, old.drop_frame)?.shift(&old, frames.into())?
             }
         };
         set(header, "timeCode", AttributeValue::TimeCode(code));

@@ -73,6 +73,9 @@ pub enum Transfer {
     None,
 }
 
+/// The longest side of a JPEG libjpeg reads (jmorecfg.h's JPEG_MAX_DIMENSION).
+const JPEG_MAX_SIDE: usize = 65500;
+
 /// JPEG quality when `--quality` is not given.
 pub const DEFAULT_QUALITY: u8 = 90;
 
@@ -106,6 +109,11 @@ impl Media {
                     }
                 ))
             }
+            (_, Bits::Float) if transfer.is_some() => Err(
+                "--transfer makes 8 and 16-bit code values; --bits float writes the \
+                 scene-linear values as they are"
+                    .to_string(),
+            ),
             _ if quality.is_some() && format != Format::Jpeg => Err(format!(
                 "--quality applies to JPEG output, not {}",
                 format.name()
@@ -120,11 +128,14 @@ impl Media {
     }
 
     /// Why a frame of `width` x `height` pixels cannot be written, if it
-    /// cannot: JPEG's sizes are 16-bit.
+    /// cannot: JPEG's sizes are 16-bit, but libjpeg (oiiotool, Pillow and
+    /// most readers) refuses a side over its JPEG_MAX_DIMENSION, 65500.
     pub fn too_large(&self, (width, height): (usize, usize)) -> Option<String> {
-        let limit = u16::MAX as usize;
-        (self.format == Format::Jpeg && width.max(height) > limit).then(|| {
-            format!("the result is {width}x{height} pixels, larger than JPEG's {limit} a side")
+        (self.format == Format::Jpeg && width.max(height) > JPEG_MAX_SIDE).then(|| {
+            format!(
+                "the result is {width}x{height} pixels, larger than the {JPEG_MAX_SIDE} a side \
+                 JPEG readers take (libjpeg's JPEG_MAX_DIMENSION)"
+            )
         })
     }
 
@@ -143,8 +154,15 @@ impl Media {
             Bits::Eight => {
                 Samples::U8(
                     self.code_values(rows, window, label, 255, |v, colour, x, y| {
-                        // Colour dithered; alpha rounded.
-                        let threshold = if colour { ordered_dither(x, y) } else { 0.5 };
+                        // Colour dithered; alpha rounded. JPEG keeps each
+                        // 8x8 block's mean in one coefficient, cheaply, and
+                        // a pixel pattern only in the costly others (mostly
+                        // quantised away): its dither varies by block.
+                        let threshold = match (colour, self.format) {
+                            (false, _) => 0.5,
+                            (true, Format::Jpeg) => ordered_dither(x / 8, y / 8),
+                            (true, _) => ordered_dither(x, y),
+                        };
                         (self.encode(v, colour) * 255.0 + threshold).min(255.0) as u8
                     }),
                 )
@@ -346,7 +364,7 @@ fn write_jpeg(
 ) -> Result<()> {
     let (Ok(width), Ok(height)) = (u16::try_from(width), u16::try_from(height)) else {
         return Err(fail(&format!(
-            "{width}x{height} is larger than JPEG's 65535x65535"
+            "{width}x{height} is larger than JPEG's {JPEG_MAX_SIDE} a side"
         )));
     };
     let image = Pulled {
@@ -360,7 +378,13 @@ fn write_jpeg(
         out,
         comment: Some(comment(note)),
     };
-    let encoder = jpeg_encoder::Encoder::new(out, quality);
+    let mut encoder = jpeg_encoder::Encoder::new(out, quality);
+    // Chroma halved both ways below quality 100, as libjpeg (oiiotool,
+    // cjpeg) does at every quality: the crate's 4:4:4 from quality 90 made
+    // review frames 1.4x oiiotool's at the same quality.
+    if quality < 100 {
+        encoder.set_sampling_factor(jpeg_encoder::SamplingFactor::R_4_2_0);
+    }
     let encoded = encoder.encode_image(&image);
     if let Some(e) = image.error.into_inner() {
         return Err(e);

@@ -59,13 +59,23 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
     if !views.iter().any(|v| v == view) {
         return Err(file.error(unknown("view", view, &views.join(", "), &views)));
     }
-    // A part whose `view` is the view holds it; a `multiView` list only
+    // The parts whose `view` is the view hold it; a `multiView` list only
     // names the views (a multi-part file lists them in every part), so a
-    // part listing it holds it only when no part is of that view.
-    let by_attribute = headers.iter().position(|h| {
-        let name = h.own_attributes.view_name.as_ref();
-        name.is_some_and(|n| n.is(view))
-    });
+    // part listing it holds it only when no part is of that view. A view
+    // is all its parts: its colour is read from the first of them with
+    // colour, so a depth-only part ahead (`depth_left`, then `rgba_left`)
+    // is not taken for the view.
+    let of_view: Vec<usize> = (0..headers.len())
+        .filter(|&i| {
+            let name = headers[i].own_attributes.view_name.as_ref();
+            name.is_some_and(|n| n.is(view))
+        })
+        .collect();
+    let by_attribute = of_view
+        .iter()
+        .copied()
+        .find(|&i| has_colour(&headers[i]))
+        .or(of_view.first().copied());
     let by_list = || {
         headers.iter().position(|h| {
             let list = h.own_attributes.multi_view_names.as_ref();
@@ -73,6 +83,16 @@ pub fn choose_part(file: &ExrFile, part: Option<&str>, view: Option<&str>) -> Re
         })
     };
     Ok(by_attribute.or_else(by_list).unwrap_or(0))
+}
+
+/// Whether a part has a colour channel: R, G, B or luminance Y, of any
+/// layer (`diffuse.R`).
+fn has_colour(header: &exr::meta::header::Header) -> bool {
+    header.channels.list.iter().any(|c| {
+        let name = c.name.utf8();
+        let last = name.rsplit('.').next().unwrap_or_default();
+        ["R", "G", "B", "Y"].contains(&last)
+    })
 }
 
 /// The views of a file, in order: its parts' `view` attributes and the

@@ -31,24 +31,32 @@ use std::path::{Path, PathBuf};
 /// FIFO, socket, device or directory is refused ("not a regular file (a
 /// FIFO)") rather than waited on or read forever.
 pub fn open_regular(path: &Path) -> std::io::Result<File> {
-    use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
+    use std::os::unix::fs::OpenOptionsExt;
     let file = std::fs::OpenOptions::new()
         .read(true)
         .custom_flags(libc::O_NONBLOCK)
         .open(path)?;
-    let kind = file.metadata()?.file_type();
-    let what = match () {
-        _ if kind.is_file() => return Ok(file),
+    match not_regular(file.metadata()?.file_type()) {
+        None => Ok(file),
+        Some(what) => Err(std::io::Error::other(format!(
+            "not a regular file ({what})"
+        ))),
+    }
+}
+
+/// What a file that is not a regular one is ("a FIFO"); `None` for a
+/// regular file.
+pub fn not_regular(kind: std::fs::FileType) -> Option<&'static str> {
+    use std::os::unix::fs::FileTypeExt;
+    Some(match () {
+        _ if kind.is_file() => return None,
         _ if kind.is_dir() => "a directory",
         _ if kind.is_fifo() => "a FIFO",
         _ if kind.is_socket() => "a socket",
         _ if kind.is_char_device() => "a character device",
         _ if kind.is_block_device() => "a block device",
         _ => "not a file",
-    };
-    Err(std::io::Error::other(format!(
-        "not a regular file ({what})"
-    )))
+    })
 }
 
 /// `ExrFile::identity` of `file`, whose header ends at `table_start`.

@@ -158,10 +158,12 @@ impl Counting {
     }
 
     /// `code` moved by `frames` frames, wrapping around midnight; its flags
-    /// and user data kept.
-    pub fn shift(self, code: &TimeCode, frames: i64) -> Result<TimeCode, String> {
+    /// and user data kept. Wide, so that any two i64 frames' difference
+    /// (`--frames` near i64's ends against an `@FRAME` anchor) is exact.
+    pub fn shift(self, code: &TimeCode, frames: i128) -> Result<TimeCode, String> {
         let day = self.frames_per_day();
-        let mut n = (self.frames(code)? + frames.rem_euclid(day)).rem_euclid(day);
+        let within = frames.rem_euclid(i128::from(day)) as i64;
+        let mut n = (self.frames(code)? + within).rem_euclid(day);
         if self.drop {
             let (tens, rest) = (n / 17982, n % 17982);
             n += 18 * tens + if rest > 1 { 2 * ((rest - 2) / 1798) } else { 0 };
@@ -281,7 +283,7 @@ mod tests {
     #[test]
     fn drop_frame_skips_two_numbers_a_minute_but_every_tenth() {
         let df = Counting::new((30000, 1001), true).unwrap();
-        let after = |text: &str, n: i64| display(&df.shift(&code(text), n).unwrap());
+        let after = |text: &str, n: i64| display(&df.shift(&code(text), n.into()).unwrap());
         assert_eq!(after("00:00:59;29", 1), "00:01:00;02");
         assert_eq!(after("00:09:59;29", 1), "00:10:00;00");
         assert_eq!(after("00:01:00;02", -1), "00:00:59;29");
@@ -291,10 +293,25 @@ mod tests {
         assert!(df.frames(&code("00:01:00;00")).is_err());
         assert!(df.frames(&code("00:10:00;00")).is_ok());
         // Every frame of a day round-trips.
-        for n in (0..144 * 17982).step_by(7) {
-            let tc = df.shift(&code("00:00:00;00"), n).unwrap();
+        for n in (0..144 * 17982i64).step_by(7) {
+            let tc = df.shift(&code("00:00:00;00"), n.into()).unwrap();
             assert_eq!(df.frames(&tc).unwrap(), n);
         }
+    }
+
+    #[test]
+    fn shifts_of_any_two_frames_apart_are_exact() {
+        let at24 = Counting::new((24, 1), false).unwrap();
+        let start = code("00:00:00:00");
+        // i64::MAX - (-1e9) frames, modulo a day of 2,073,600: 235,007.
+        let far = i128::from(i64::MAX) + 1_000_000_000;
+        assert_eq!(display(&at24.shift(&start, far).unwrap()), "02:43:11:23");
+        let back = i128::from(i64::MIN) - i128::from(i64::MAX);
+        let expected = back.rem_euclid(2_073_600) as i64;
+        assert_eq!(
+            at24.frames(&at24.shift(&start, back).unwrap()).unwrap(),
+            expected
+        );
     }
 
     #[test]

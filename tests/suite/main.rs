@@ -44,3 +44,4 @@ mod tiled;
 mod tiled_output;
 mod transform;
 mod transform_exact;
+mod views_and_parts;

@@ -237,6 +237,10 @@ fn erasing_keeps_what_exrcomp_writes_and_owned_names_are_refused() {
         ),
         (["--timecode", "25:00:00:00"], "hours 25 is over 23"),
         (["--fps", "fast"], "not a rational"),
+        // A negative value is the option's value, refused by its own rule
+        // (it had been "unexpected argument '-24'").
+        (["--fps", "-24"], "a frame rate is above 0, not -24"),
+        (["--dwa-level", "-1"], "invalid value '-1' for '--dwa-level"),
     ] {
         let mut all = vec!["transcode", s(&input), "-o", s(&output), "-q"];
         all.extend(args);
@@ -341,6 +345,25 @@ fn each_frame_gets_its_timecode() {
         time_of(&exrheader, &d.join("df.1001.exr")),
         "time 00:00:59:28"
     );
+    // Frames at i64's end against an anchor far below: exact, modulo a day
+    // (i64::MAX + 1e9 frames at 24 fps); it had wrapped to 09:25:41:07.
+    ok(&[
+        "transcode",
+        s(&d.join("bg.1001.exr")),
+        "-o",
+        s(&d.join("far.#.exr")),
+        "-q",
+        "--frames",
+        "9223372036854775807",
+        "--timecode",
+        "00:00:00:00@-1000000000",
+        "--fps",
+        "24",
+    ]);
+    assert_eq!(
+        time_of(&exrheader, &d.join("far.9223372036854775807.exr")),
+        "time 02:43:11:23"
+    );
     // No frame rate anywhere: a one-line usage error naming the frame.
     let out = run(&[
         "transcode",
@@ -353,6 +376,35 @@ fn each_frame_gets_its_timecode() {
     ]);
     assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
     assert!(stderr(&out).contains("frame 1001") && stderr(&out).contains("--fps"));
+}
+
+/// Negative frame numbers without `=`: `--frames -3-2` is a range, as
+/// `--frames=-3-2` was (it had been "unexpected argument '-3-2'").
+#[test]
+fn negative_frames_need_no_equals_sign() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let plates = d.join("g.####.exr");
+    generate(&plates, "bg", (16, 8), &["--frames", "-3-2"]);
+    let out = d.join("o.####.exr");
+    ok(&[
+        "transcode",
+        s(&plates),
+        "-o",
+        s(&out),
+        "--frames",
+        "-3-2",
+        "-q",
+    ]);
+    for frame in -3..=2 {
+        assert!(exrcomp_path(&out, frame).exists(), "frame {frame}");
+    }
+}
+
+/// `out.####.exr`'s file of `frame`, as exrcomp names it.
+fn exrcomp_path(pattern: &Path, frame: i64) -> std::path::PathBuf {
+    let text = s(pattern).replace("####", &format!("{frame:04}"));
+    std::path::PathBuf::from(text)
 }
 
 #[test]

@@ -36,12 +36,22 @@ params! {
 }
 
 /// `file` as an absolute path (OCIO resolves relative ones against a
-/// config's search path; a raw config has none), checked to exist.
+/// config's search path; a raw config has none), checked to be a regular
+/// file: a device or FIFO would be read forever or block.
 pub fn file(file: &FileName) -> Result<String, String> {
     let file = file.0.as_str();
     let path = std::path::absolute(file).map_err(|e| format!("file '{file}': {e}"))?;
-    if !path.is_file() {
-        return Err(format!("no file '{file}' (the LUT or transform to apply)"));
+    let kind = match std::fs::metadata(&path) {
+        Ok(metadata) => metadata.file_type(),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Err(format!("no file '{file}' (the LUT or transform to apply)"))
+        }
+        Err(e) => return Err(format!("file '{file}': {e}")),
+    };
+    if let Some(what) = crate::io::reader::not_regular(kind) {
+        return Err(format!(
+            "'{file}' is {what}, not a regular file (the LUT or transform to apply)"
+        ));
     }
     Ok(path.to_string_lossy().into_owned())
 }

@@ -355,6 +355,14 @@ mod tests {
             "no file '/nowhere/grade.cube' (the LUT or transform to apply)"
         );
         assert!(message.lines().count() == 1);
+        // A file that is there but not a regular one says what it is.
+        for (file, what) in [("/dev/zero", "a character device"), ("/", "a directory")] {
+            for op in [&filetransform::FILETRANSFORM, &cdl::CDL] {
+                let message = error(op, &[("file", file)]);
+                let says = format!("'{file}' is {what}, not a regular file");
+                assert!(message.starts_with(&says), "{message}");
+            }
+        }
     }
 
     fn v1() -> Config {
