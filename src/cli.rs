@@ -798,6 +798,7 @@ fn not_applicable(name: &str) -> Vec<(&'static str, &'static str)> {
             .to_vec(),
         "demo" => [
             "frames",
+            "chunk_from",
             "missing",
             "keep_going",
             "all_parts",
