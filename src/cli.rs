@@ -39,7 +39,9 @@ fn version_text() -> String {
 )]
 pub struct Cli {
     /// Worker threads (default: one per core).
-    #[arg(long, global = true, help_heading = "Run control", allow_negative_numbers = true, value_parser = crate::params::parse_threads)]
+    /// (At most a farm worker's: a local run is held to this machine's
+    /// cores after parsing, `refuse_local_threads`.)
+    #[arg(long, global = true, help_heading = "Run control", allow_negative_numbers = true, value_parser = crate::params::parse_farm_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -243,6 +245,12 @@ pub enum Size {
     Eight,
 }
 
+value_enum!(crate::report::FarmLog {
+    Frames => "frames": "a line per frame: written or kept",
+    Openjd => "openjd": "those and openjd_progress: / openjd_status: lines",
+    Deadline => "deadline": "those and Progress: N% lines",
+});
+
 value_enum!(Size {
     Hd => "1080p": "1920x1080",
     Uhd => "4k": "3840x2160",
@@ -253,23 +261,35 @@ value_enum!(Size {
 pub enum Farm {
     /// An Open Job Description job template (`openjd check`, `openjd run`,
     /// AWS Deadline Cloud): one task per chunk, each `--frames CHUNK --resume`.
-    Openjd(FarmJob),
+    Openjd(OpenJdJob),
     /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
     /// layer (frames A-B or A-B:STEP); see the README for submitting it.
-    Opencue(FarmJob),
+    Opencue(OpenCueJob),
     /// Deadline 10 job-info and plugin-info files for the CommandLine
     /// plugin (`deadlinecommand JOBINFO PLUGININFO`): frames A-B or A-B:STEP.
-    Deadline(FarmJob),
+    Deadline(DeadlineJob),
 }
 
 impl Farm {
+    pub fn job(&self) -> &FarmJob {
+        match self {
+            Farm::Openjd(farm) => &farm.job,
+            Farm::Opencue(farm) => &farm.job,
+            Farm::Deadline(farm) => &farm.job,
+        }
+    }
+
     pub fn job_mut(&mut self) -> &mut FarmJob {
-        let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = self;
-        job
+        match self {
+            Farm::Openjd(farm) => &mut farm.job,
+            Farm::Opencue(farm) => &mut farm.job,
+            Farm::Deadline(farm) => &mut farm.job,
+        }
     }
 }
 
-/// A local command to run on a farm, in frame chunks.
+/// A local command to run on a farm, in frame chunks: what every farm takes.
+/// (An option of one farm only is declared with it, so another refuses it.)
 #[derive(Args)]
 pub struct FarmJob {
     /// All the frames, as --frames takes them.
@@ -278,26 +298,56 @@ pub struct FarmJob {
     /// Frames per task.
     #[arg(long, default_value_t = 10)]
     pub chunk: usize,
-    /// OpenJD: let the scheduler chunk the frames (a CHUNK[INT] task
-    /// parameter, the TASK_CHUNKING extension) instead of listing the chunks.
+    /// The job's name (default: `exrcomp` and the command's name).
     #[arg(long)]
-    pub task_chunking: bool,
-    /// OpenJD: chunks sized towards this runtime from the ones done
-    /// (implies --task-chunking).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
-    pub target_runtime: Option<u32>,
-    /// OpenCue: the layer's service.
-    #[arg(long, default_value = "shell")]
-    pub service: String,
+    pub name: Option<String>,
     /// Where the job is written.
     #[arg(value_hint = ValueHint::FilePath, short, long)]
-    pub output: PathBuf,
+    pub output: Option<PathBuf>,
     /// Threads of each task (the global --threads), set by main.
     #[arg(skip)]
     pub threads: Option<usize>,
-    /// The exrcomp command to run, without --frames (after `--`).
-    #[arg(required = true, trailing_var_arg = true, allow_hyphen_values = true)]
+    /// The exrcomp command to run, without --frames (after `--`, so that
+    /// another farm's option is refused, not taken for the command).
+    #[arg(required = true, last = true, allow_hyphen_values = true)]
     pub command: Vec<String>,
+}
+
+/// `exrcomp farm openjd`: the options every farm takes and OpenJD's own.
+#[derive(Args)]
+pub struct OpenJdJob {
+    #[command(flatten)]
+    pub job: FarmJob,
+    /// Let the scheduler chunk the frames (a CHUNK[INT] task parameter, the
+    /// TASK_CHUNKING extension) instead of listing the chunks.
+    #[arg(long)]
+    pub task_chunking: bool,
+    /// Chunks sized towards this runtime from the ones done (implies
+    /// --task-chunking).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub target_runtime: Option<u32>,
+    /// Write a job bundle in this folder instead of -o: `template.yaml` and
+    /// `parameter_values.yaml`, as AWS Deadline Cloud's `deadline bundle
+    /// submit DIR` takes it.
+    #[arg(long, value_hint = ValueHint::DirPath, conflicts_with = "output")]
+    pub bundle: Option<PathBuf>,
+}
+
+/// `exrcomp farm opencue`: the options every farm takes and OpenCue's own.
+#[derive(Args)]
+pub struct OpenCueJob {
+    #[command(flatten)]
+    pub job: FarmJob,
+    /// The layer's service.
+    #[arg(long, default_value = "shell")]
+    pub service: String,
+}
+
+/// `exrcomp farm deadline`: the options every farm takes.
+#[derive(Args)]
+pub struct DeadlineJob {
+    #[command(flatten)]
+    pub job: FarmJob,
 }
 
 /// Which layers, views and parts an operation works on.
@@ -345,6 +395,11 @@ pub struct RunArgs {
         allow_hyphen_values = true
     )]
     pub frames: Option<String>,
+    /// Only the COUNT frames of --frames from FIRST on, FIRST a chunk's
+    /// first frame: a farm task named by its first frame alone (OpenCue's
+    /// #FRAME_START#, whose #FRAME_END# Cuebot before 1.0 gets wrong).
+    #[arg(help_heading = "Frames and sequences", long, value_name = "FIRST,COUNT", allow_hyphen_values = true, value_parser = parse_chunk_from)]
+    pub chunk_from: Option<(i64, usize)>,
     /// Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
     /// (default: the input's whose header the output keeps; each command's
     /// help says which, `compression_default`).
@@ -450,6 +505,17 @@ pub struct RunArgs {
     /// Print a JSON summary on standard output at the end.
     #[arg(help_heading = "Run control", long)]
     pub json: bool,
+    /// Lines on standard output for a log or a farm: a line per frame
+    /// (written, kept) by default when it is not a terminal (with --quiet
+    /// too); openjd and deadline add their progress lines.
+    #[arg(
+        help_heading = "Run control",
+        long,
+        value_enum,
+        value_name = "FORMAT",
+        conflicts_with = "json"
+    )]
+    pub progress: Option<crate::report::FarmLog>,
     /// Check every frame's inputs and the outputs, print the files each
     /// output frame reads and writes (with --json as JSON), decode nothing
     /// and write nothing.
@@ -493,6 +559,16 @@ fn parse_chart(text: &str) -> Result<PathBuf, String> {
         _ => Err(format!(
             "'{text}': a chart is written as FILE.svg or FILE.png"
         )),
+    }
+}
+
+/// `FIRST,COUNT`: a chunk's first frame and its size (at least 1).
+fn parse_chunk_from(text: &str) -> Result<(i64, usize), String> {
+    let bad = || format!("expected FIRST,COUNT (a chunk's first frame, its frames), not '{text}'");
+    let (first, count) = text.split_once(',').ok_or_else(bad)?;
+    match (first.trim().parse(), count.trim().parse()) {
+        (Ok(first), Ok(count)) if count >= 1 => Ok((first, count)),
+        _ => Err(bad()),
     }
 }
 
@@ -603,6 +679,10 @@ fn subcommand(op: &'static Operation) -> clap::Command {
             if let Some(default) = param.default {
                 arg = arg.default_value(default);
             }
+        }
+        // A file (a colour config, a LUT) is made absolute in a farm job.
+        if param.file {
+            arg = arg.value_hint(ValueHint::FilePath);
         }
         // Merge's operator has always been `--op` on the command line.
         if param.name == "operator" {
@@ -748,6 +828,7 @@ fn not_applicable(name: &str) -> Vec<(&'static str, &'static str)> {
             .to_vec(),
         "demo" => [
             "frames",
+            "chunk_from",
             "missing",
             "keep_going",
             "all_parts",
@@ -803,10 +884,35 @@ pub fn refuse_not_applicable(matches: &ArgMatches) -> Result<(), clap::Error> {
     Ok(())
 }
 
+/// `--threads` beyond this machine's bound (`parse_threads`), but for
+/// `farm`, whose tasks run on farm workers (`parse_farm_threads`).
+fn refuse_local_threads(matches: &ArgMatches) -> Result<(), clap::Error> {
+    let Some((name, sub)) = matches.subcommand() else {
+        return Ok(());
+    };
+    let given = sub
+        .try_get_one::<usize>("threads")
+        .ok()
+        .flatten()
+        .or(matches.try_get_one::<usize>("threads").ok().flatten());
+    match given {
+        Some(threads) if name != "farm" => crate::params::parse_threads(&threads.to_string())
+            .map(drop)
+            .map_err(|why| {
+                command().error(
+                    clap::error::ErrorKind::ValueValidation,
+                    format!("invalid value '{threads}' for '--threads': {why}"),
+                )
+            }),
+        _ => Ok(()),
+    }
+}
+
 /// The command line parsed, or the process ended with clap's message.
 pub fn parse() -> Cli {
     let matches = command().get_matches();
     refuse_not_applicable(&matches)
+        .and_then(|()| refuse_local_threads(&matches))
         .and_then(|()| Cli::from_arg_matches(&matches))
         .unwrap_or_else(|e| e.exit())
 }

@@ -22,14 +22,16 @@ use crate::io::media::{Format, Media};
 use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
-use crate::io::sequence::{format_frame_list, parse_frame_list, split_time, FramePattern};
+use crate::io::sequence::{
+    chunk_from, format_frame_list, parse_frame_list, split_time, FramePattern,
+};
 use crate::io::text::Utf8Text;
 use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
 use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
-use crate::report::{count, Report, Summary};
+use crate::report::{count, FarmLog, Outcome, Report, Summary};
 use crate::slate::{Slate, SlateFrame};
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
@@ -68,7 +70,9 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             refuse_overwriting(bands.clone(), [(None, output.clone())])?;
             crate::io::stitch::stitch(&bands, &output).map(|()| None)
         }
-        Command::Farm { farm } => farm::write_job(&farm, &working_folder()?).map(|()| None),
+        Command::Farm { farm } => {
+            farm::write_job(&farm, &farm::logical_working_folder()?).map(|()| None)
+        }
         Command::Run { job, output, run } => {
             let mut plan = crate::job::load(&job, run.proxy_scale)?;
             if let Some(output) = output {
@@ -183,10 +187,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
                 pixel_type,
             };
             let output = FramePattern::output(&output)?;
-            let frames = match &run.frames {
-                Some(text) => parse_frame_list(text)?,
-                None => vec![1],
-            };
+            let frames = frame_list(&run)?.unwrap_or(vec![1]);
             check_frame_count(&frames, &output)?;
             if run.proxy_scale.is_some() {
                 return Err(Error::usage(
@@ -257,6 +258,23 @@ pub fn working_folder() -> Result<PathBuf> {
     std::env::current_dir().map_err(|e| Error::usage(format!("no working folder: {e}")))
 }
 
+/// The frames `--frames` names, cut to the chunk `--chunk-from` names.
+fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
+    let Some(text) = &run.frames else {
+        return match run.chunk_from {
+            Some(_) => Err(Error::usage(
+                "--chunk-from cuts the frames of --frames: give them",
+            )),
+            None => Ok(None),
+        };
+    };
+    let frames = parse_frame_list(text)?;
+    Ok(Some(match run.chunk_from {
+        Some((first, count)) => chunk_from(&frames, first, count)?,
+        None => frames,
+    }))
+}
+
 /// A job over input sequences (`file.exr:PART` picks a part); the header
 /// comes from input `header_from`.
 pub(crate) fn input_job(
@@ -291,8 +309,8 @@ pub(crate) fn input_job(
     }
     let output = FramePattern::output(output)?;
     let mut attributes = edits(run)?;
-    let frames = match &run.frames {
-        Some(text) => parse_frame_list(text)?,
+    let frames = match frame_list(run)? {
+        Some(frames) => frames,
         None => default_frames(&inputs, &times)?,
     };
     // The shot's frames are the inputs' (all of them without --frames), so
@@ -739,7 +757,8 @@ pub fn others_made(files: &[PathBuf]) -> String {
 fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
     let quiet = RunArgs {
         quiet: true,
-        json: false,
+        // Its line, but no progress of its own: the run's counts its frames.
+        progress: run.progress.map(|_| FarmLog::Frames),
         ..run.clone()
     };
     let (_, summary) = run_with_progress(slate, label, &quiet, Summary::default())?;
@@ -871,10 +890,10 @@ pub(crate) fn run_with_progress(
     folders
         .iter()
         .for_each(|dir| remove_stale_temporaries(dir, &inputs));
-    let report = Report::new(label, job.frames.len(), run.quiet, run.json);
+    let report = Report::new(label, job.frames.len(), run.quiet, run.json).with_log(farm_log(run));
     let events = Progress {
         report: &report,
-        frame_label: |f| job.frame_label(f),
+        job,
         warnings: match run.quiet {
             true => Vec::new(),
             false => summary.warnings.clone(),
@@ -893,17 +912,37 @@ pub(crate) fn run_with_progress(
     Ok((report, summary))
 }
 
-/// Collects the run's events into its summary and moves the progress bar.
-struct Progress<'a, L> {
+/// The lines a run prints on standard output as frames finish: those
+/// `--progress` asks for, else a line per frame when standard output is not
+/// a terminal (a log, a farm), --quiet or not; none with --json, whose
+/// standard output is its summary.
+fn farm_log(run: &RunArgs) -> Option<FarmLog> {
+    use std::io::IsTerminal;
+    match run.progress {
+        Some(log) => Some(log),
+        None if run.json || std::io::stdout().is_terminal() => None,
+        None => Some(FarmLog::Frames),
+    }
+}
+
+/// Collects the run's events into its summary, moves the progress bar and
+/// says what became of each frame.
+struct Progress<'a> {
     report: &'a Report,
-    frame_label: L,
+    job: &'a Job,
     /// Printed with the first frame done (`warn_once`).
     warnings: Vec<String>,
     warned: std::sync::Once,
     summary: Mutex<Summary>,
 }
 
-impl<L> Progress<'_, L> {
+impl Progress<'_> {
+    fn report(&self, frame: i64, outcome: Outcome) {
+        let label = self.job.frame_label(frame);
+        self.report
+            .frame(label, outcome, &self.job.output.path(frame));
+    }
+
     /// The run's warnings, printed once a frame is done: a run that fails
     /// before (a damaged first frame) says only its error, in one line.
     fn warn_once(&self) {
@@ -915,19 +954,24 @@ impl<L> Progress<'_, L> {
     }
 }
 
-impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
+impl Events for Progress<'_> {
     fn written(&self, plan: &FramePlan) {
         self.warn_once();
         let mut summary = self.summary.lock().expect("not poisoned");
         summary.frames += 1;
         summary.pixels += plan.pixels() as u64;
-        self.report.frame_done();
+        let outcome = match summary.redone.contains(&plan.frame) {
+            true => Outcome::Redone,
+            false => Outcome::Written,
+        };
+        drop(summary);
+        self.report(plan.frame, outcome);
     }
 
     fn kept(&self, frame: i64) {
         self.warn_once();
         self.summary.lock().expect("not poisoned").kept.push(frame);
-        self.report.frame_done();
+        self.report(frame, Outcome::Kept);
     }
 
     fn stale(&self, frame: i64) {
@@ -945,11 +989,15 @@ impl<L: Fn(i64) -> Option<i64> + Sync> Events for Progress<'_, L> {
         if summary.failed.iter().any(|(f, _)| *f == frame) {
             return;
         }
-        let label = (self.frame_label)(frame).map_or(String::new(), |f| format!(" {f}"));
+        let label = self
+            .job
+            .frame_label(frame)
+            .map_or(String::new(), |f| format!(" {f}"));
         self.report
             .note(&format!("exrcomp: frame{label} failed, going on: {error}"));
         summary.failed.push((frame, error.clone()));
-        self.report.frame_done();
+        drop(summary);
+        self.report(frame, Outcome::Failed);
     }
 }
 

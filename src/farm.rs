@@ -9,9 +9,10 @@ use crate::error::{Error, Result};
 use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
 use crate::io::sequence::parse_frame_list;
 use crate::io::writer::write_whole;
+use crate::report::FarmLog;
 use clap::{CommandFactory, Parser, ValueHint};
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// Most tasks an OpenJD task parameter may list.
 const OPENJD_MAX_TASKS: usize = 1024;
@@ -45,6 +46,105 @@ pub fn range_expression(frames: &[i64]) -> String {
         i = j + 1;
     }
     runs.join(",")
+}
+
+/// What differs between the farms beyond their files' formats, in one place
+/// (specs/farm.md, "What each farm gets").
+struct Rules {
+    /// Its name in messages.
+    name: &'static str,
+    /// The lines its tasks print for it (`--progress`): `None` for the
+    /// default off a terminal, a line per frame.
+    log: Option<FarmLog>,
+}
+
+fn rules(farm: &Farm) -> Rules {
+    match farm {
+        Farm::Openjd(_) => Rules {
+            name: "OpenJD",
+            log: Some(FarmLog::Openjd),
+        },
+        Farm::Opencue(_) => Rules {
+            name: "OpenCue",
+            log: None,
+        },
+        Farm::Deadline(_) => Rules {
+            name: "Deadline",
+            log: Some(FarmLog::Deadline),
+        },
+    }
+}
+
+/// Seconds an OpenJD task has between its cancel's SIGTERM and SIGKILL
+/// (`NOTIFY_THEN_TERMINATE`): exrcomp abandons the frames in flight at once
+/// and removes their temporaries, keeping every frame done; the period
+/// bounds that, with room for a frame finishing if a later exrcomp does.
+const CANCEL_NOTIFY_SECONDS: u32 = 120;
+
+/// `path` with its `.` and `..` taken out lexically, as a shell's `cd`
+/// reads them from the folder it names (a `..` after a link climbs out of
+/// the link's name, not its target): the spelling path-mapping rules match.
+pub fn normalise(path: &Path) -> PathBuf {
+    let mut clean = PathBuf::new();
+    for part in path.components() {
+        match part {
+            Component::CurDir => {}
+            Component::ParentDir if clean.file_name().is_some() => {
+                clean.pop();
+            }
+            // `/..` is `/`; a relative path keeps a leading `..`.
+            Component::ParentDir if clean.has_root() => {}
+            part => clean.push(part),
+        }
+    }
+    clean
+}
+
+/// The folder `exrcomp farm` runs in, as the user names it: `$PWD` (the
+/// shell's logical folder, through the links it was reached by) when it is
+/// this very folder, else the real one.
+pub fn logical_working_folder() -> Result<PathBuf> {
+    use std::os::unix::fs::MetadataExt;
+    let real = crate::commands::working_folder()?;
+    let same = |a: &Path, b: &Path| match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(a), Ok(b)) => (a.dev(), a.ino()) == (b.dev(), b.ino()),
+        _ => false,
+    };
+    Ok(std::env::var_os("PWD")
+        .map(PathBuf::from)
+        .filter(|pwd| pwd.is_absolute() && same(pwd, &real))
+        .map_or(real, |pwd| normalise(&pwd)))
+}
+
+/// The colour config the submitter resolves (`$OCIO`, else the built-in
+/// one: `--config` is an argument of the command), which every task is
+/// given as `$OCIO` so that no worker uses its own.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ColourConfig {
+    /// A config file, absolute: an OpenJD PATH parameter, mapped.
+    File(String),
+    /// A built-in config's name (`ocio://...`).
+    Name(String),
+}
+
+impl ColourConfig {
+    fn resolve(cwd: &Path) -> Self {
+        match std::env::var("OCIO").ok().filter(|v| !v.is_empty()) {
+            Some(name) if name.starts_with("ocio://") => ColourConfig::Name(name),
+            Some(file) => ColourConfig::File(absolute(cwd, &file)),
+            None => ColourConfig::Name(crate::ops::colour::BUILTIN.to_string()),
+        }
+    }
+
+    pub fn value(&self) -> &str {
+        let (ColourConfig::File(value) | ColourConfig::Name(value)) = self;
+        value
+    }
+}
+
+/// `path` absolute against `cwd`, and normalised.
+fn absolute(cwd: &Path, path: &str) -> String {
+    normalise(&cwd.join(path)).to_string_lossy().into_owned()
 }
 
 /// Commands that render no frames, so no farm task can run them.
@@ -98,8 +198,9 @@ pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::A
             _ => Flow::In,
         };
         for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            // A value clap places outside the arguments is left alone.
-            if at < args.len() {
+            // A value clap places outside the arguments is left alone, and
+            // a config's name (`ocio://NAME`) is no file.
+            if at < args.len() && !args[at].starts_with("ocio://") {
                 files.push((at, flow));
             }
         }
@@ -122,6 +223,17 @@ pub struct Needs {
     pub memory: u64,
     /// The submitter's `EXRCOMP_*` settings, which tasks run with.
     pub environment: BTreeMap<String, String>,
+    /// The colour config tasks run with (`$OCIO`).
+    pub colour: ColourConfig,
+}
+
+impl Needs {
+    /// The settings with `OCIO`, for a farm that passes values as they are.
+    pub fn settings(&self) -> BTreeMap<String, String> {
+        let mut settings = self.environment.clone();
+        settings.insert("OCIO".into(), self.colour.value().into());
+        settings
+    }
 }
 
 impl Needs {
@@ -142,15 +254,17 @@ pub fn task_command(
     command: &[String],
     frames: &str,
     cwd: &Path,
-    threads: Option<usize>,
+    (threads, log): (Option<usize>, Option<FarmLog>),
 ) -> Result<(TaskCommand, Needs, DryRun)> {
-    if command
-        .iter()
-        .any(|a| a == "--frames" || a.starts_with("--frames="))
-    {
-        return Err(Error::usage(
-            "give --frames to `exrcomp farm`, not to the command: each task gets its chunk",
-        ));
+    for option in ["--frames", "--chunk-from"] {
+        if command
+            .iter()
+            .any(|a| a == option || a.starts_with(&format!("{option}=")))
+        {
+            return Err(Error::usage(format!(
+                "give --frames to `exrcomp farm`, not {option} to the command: each task gets its chunk"
+            )));
+        }
     }
     let (mut task, name, sub) = parse_command(command)?;
     if NOT_FRAMES.contains(&name.as_str()) {
@@ -159,15 +273,20 @@ pub fn task_command(
         )));
     }
     for &(at, _) in &task.files {
-        let path = &mut task.args[at];
-        if Path::new(path).is_relative() {
-            *path = cwd.join(&*path).to_string_lossy().into_owned();
-        }
+        task.args[at] = absolute(cwd, &task.args[at]);
     }
-    for flag in ["resume", "quiet"] {
-        if sub.try_get_one::<bool>(flag).ok().flatten() != Some(&true) {
-            task.args.push(format!("--{flag}"));
-        }
+    if sub.try_get_one::<bool>("resume").ok().flatten() != Some(&true) {
+        task.args.push("--resume".into());
+    }
+    let given = |id: &str| sub.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
+    if let Some(log) = log.filter(|_| !given("progress") && !given("json")) {
+        task.args.push("--progress".into());
+        task.args.push(
+            clap::ValueEnum::to_possible_value(&log)
+                .expect("named")
+                .get_name()
+                .into(),
+        );
     }
     // Memory grows with the threads (strips give each a block): a task runs
     // with the threads its memory is computed for.
@@ -179,8 +298,12 @@ pub fn task_command(
             threads
         }
     };
+    // The check says nothing but its error (tasks are not quiet: a farm's
+    // log wants their lines and summary).
+    let quiet = (!given("quiet")).then(|| "--quiet".to_string());
     let check = argv(&task.args)
         .chain(["--frames".into(), frames.into(), "--dry-run".into()])
+        .chain(quiet)
         .collect::<Vec<_>>();
     let cli = Cli::try_parse_from(check).map_err(|e| Error::usage(e.to_string()))?;
     let pool = rayon::ThreadPoolBuilder::new()
@@ -203,6 +326,7 @@ pub fn task_command(
         environment: std::env::vars()
             .filter(|(name, _)| name.starts_with("EXRCOMP_"))
             .collect(),
+        colour: ColourConfig::resolve(cwd),
     };
     Ok((task, needs, dry))
 }
@@ -210,8 +334,10 @@ pub fn task_command(
 /// Writes the job `farm` asks for: the command checked over all its frames
 /// first, nothing written if it would fail.
 pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
-    let (Farm::Openjd(job) | Farm::Opencue(job) | Farm::Deadline(job)) = farm;
-    let (task, needs, dry) = task_command(&job.command, &job.frames, cwd, job.threads)?;
+    let job = farm.job();
+    let rules = rules(farm);
+    let (task, needs, dry) =
+        task_command(&job.command, &job.frames, cwd, (job.threads, rules.log))?;
     if !dry.others.is_empty() {
         eprintln!(
             "exrcomp: warning: {}",
@@ -219,30 +345,58 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
         );
     }
     let exrcomp = this_exrcomp()?;
+    let name = job
+        .name
+        .clone()
+        .unwrap_or_else(|| format!("exrcomp {}", task.args[0]));
+    let output = || {
+        job.output.clone().ok_or_else(|| {
+            Error::usage(format!(
+                "give -o FILE: where the {} job is written",
+                rules.name
+            ))
+        })
+    };
     let files = match farm {
-        Farm::Openjd(_) => {
+        Farm::Openjd(openjd) => {
             let tasks = Tasks::new(
                 &job.frames,
                 job.chunk,
-                job.task_chunking,
-                job.target_runtime,
+                openjd.task_chunking,
+                openjd.target_runtime,
             )?;
-            let openjd =
-                openjd_template(&exrcomp, &task, &tasks, &needs, &description(job, &needs));
-            vec![
-                (beside(&job.output, "params.json"), openjd.values),
-                (job.output.clone(), openjd.template),
-            ]
+            let about = (name.as_str(), description(job, &needs));
+            let written = openjd_template(&exrcomp, &task, &tasks, &needs, about);
+            match &openjd.bundle {
+                Some(bundle) => vec![
+                    (bundle.join("parameter_values.yaml"), written.bundle_values),
+                    (bundle.join("template.yaml"), written.template),
+                ],
+                None => {
+                    let output = output()?;
+                    vec![
+                        (beside(&output, "params.json"), written.values),
+                        (output, written.template),
+                    ]
+                }
+            }
         }
-        Farm::Opencue(_) => vec![(
-            job.output.clone(),
-            opencue_outline(&exrcomp, &task.args, job, &needs)?,
+        Farm::Opencue(opencue) => vec![(
+            output()?,
+            opencue_outline(
+                &exrcomp,
+                &task.args,
+                (job, &opencue.service),
+                (&name, &needs),
+            )?,
         )],
         Farm::Deadline(_) => {
-            let files = deadline_job(&exrcomp, &task, job, &needs, &description(job, &needs))?;
+            let about = (name.as_str(), description(job, &needs));
+            let files = deadline_job(&exrcomp, &task, job, &needs, about)?;
+            let output = output()?;
             vec![
-                (beside(&job.output, "plugin.job"), files.plugin_info),
-                (job.output.clone(), files.job_info),
+                (beside(&output, "plugin.job"), files.plugin_info),
+                (output, files.job_info),
             ]
         }
     };
@@ -364,6 +518,53 @@ impl Tasks {
             target_seconds,
         })
     }
+
+    /// The template's extensions and its `Frames` task parameter's type and
+    /// range; scheduler chunking adds the job parameters `Frames` and
+    /// `ChunkSize` to `parameters`.
+    fn openjd(&self, parameters: &mut Vec<String>) -> (String, String) {
+        match self {
+            Tasks::Listed(chunks) => (
+                String::new(),
+                format!(
+                    "\x20     type: STRING\n\x20     range: [{}]\n",
+                    chunks
+                        .iter()
+                        .map(|c| quote(c))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            ),
+            Tasks::Chunked {
+                frames,
+                chunk,
+                contiguous,
+                target_seconds,
+            } => {
+                parameters.push(format!(
+                    "- name: Frames\n\x20 type: STRING\n\x20 default: {}\n\
+                     - name: ChunkSize\n\x20 type: INT\n\x20 default: {chunk}\n\x20 minValue: 1\n",
+                    quote(frames)
+                ));
+                (
+                    "extensions: [TASK_CHUNKING]\n".to_string(),
+                    format!(
+                        "\x20     type: CHUNK[INT]\n\x20     range: \"{{{{Param.Frames}}}}\"\n\
+                         \x20     chunks:\n\x20       defaultTaskCount: \"{{{{Param.ChunkSize}}}}\"\n\
+                         \x20       rangeConstraint: {}\n{}",
+                        if *contiguous {
+                            "CONTIGUOUS"
+                        } else {
+                            "NONCONTIGUOUS"
+                        },
+                        target_seconds.map_or(String::new(), |t| {
+                            format!("\x20       targetRuntimeSeconds: {t}\n")
+                        }),
+                    ),
+                )
+            }
+        }
+    }
 }
 
 /// An Open Job Description job (specification 2023-09): its template and
@@ -373,6 +574,9 @@ pub struct OpenJdJob {
     /// `{"NAME": "VALUE"}`, as `openjd run -p file://FILE` and render
     /// managers take job parameters.
     pub values: String,
+    /// The same as a job bundle's `parameter_values.yaml` (`parameterValues`,
+    /// a list of `name` and `value`), as `deadline bundle submit` reads it.
+    pub bundle_values: String,
 }
 
 /// An Open Job Description job template: one step whose tasks are the frame
@@ -390,10 +594,9 @@ pub fn openjd_template(
     task: &TaskCommand,
     tasks: &Tasks,
     needs: &Needs,
-    description: &str,
+    (name, description): (&str, String),
 ) -> OpenJdJob {
     let command = &task.args;
-    let name = format!("exrcomp {}", command.first().map_or("", String::as_str));
     let mut parameters = Vec::new();
     let mut values = serde_json::Map::new();
     // Every path is a FILE: a sequence's pattern names files.
@@ -423,66 +626,30 @@ pub fn openjd_template(
             None => literal(&mut parameters, format!("Arg{i}"), arg),
         });
     }
-    let environment = match needs.environment.is_empty() {
-        true => String::new(),
-        false => format!(
-            "\x20 stepEnvironments:\n\
-             \x20 - name: ExrcompSettings\n\
-             \x20   description: \"The submitter's EXRCOMP_* settings\"\n\
-             \x20   variables:\n{}",
-            needs
-                .environment
-                .iter()
-                .enumerate()
-                .map(|(i, (name, value))| format!(
-                    "\x20     {name}: {}\n",
-                    literal(&mut parameters, format!("Env{i}"), value)
-                ))
-                .collect::<String>()
-        ),
+    // The colour config as the submitter resolved it: a file is a PATH
+    // parameter (mapped), a built-in one's name a literal.
+    let colour = match &needs.colour {
+        ColourConfig::File(file) => path(&mut parameters, "ColourConfig".into(), file, "IN"),
+        ColourConfig::Name(name) => quote(name),
     };
+    let environment = format!(
+        "\x20 stepEnvironments:\n\
+         \x20 - name: ExrcompSettings\n\
+         \x20   description: \"The submitter's colour config and EXRCOMP_* settings\"\n\
+         \x20   variables:\n\
+         \x20     OCIO: {colour}\n{}",
+        needs
+            .environment
+            .iter()
+            .enumerate()
+            .map(|(i, (name, value))| format!(
+                "\x20     {name}: {}\n",
+                literal(&mut parameters, format!("Env{i}"), value)
+            ))
+            .collect::<String>()
+    );
     args.extend(["--frames", "{{Task.Param.Frames}}"].map(quote));
-    let (extensions, task_parameter) = match tasks {
-        Tasks::Listed(chunks) => (
-            String::new(),
-            format!(
-                "\x20     type: STRING\n\x20     range: [{}]\n",
-                chunks
-                    .iter()
-                    .map(|c| quote(c))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-        ),
-        Tasks::Chunked {
-            frames,
-            chunk,
-            contiguous,
-            target_seconds,
-        } => {
-            parameters.push(format!(
-                "- name: Frames\n\x20 type: STRING\n\x20 default: {}\n\
-                 - name: ChunkSize\n\x20 type: INT\n\x20 default: {chunk}\n\x20 minValue: 1\n",
-                quote(frames)
-            ));
-            (
-                "extensions: [TASK_CHUNKING]\n".to_string(),
-                format!(
-                    "\x20     type: CHUNK[INT]\n\x20     range: \"{{{{Param.Frames}}}}\"\n\
-                     \x20     chunks:\n\x20       defaultTaskCount: \"{{{{Param.ChunkSize}}}}\"\n\
-                     \x20       rangeConstraint: {}\n{}",
-                    if *contiguous {
-                        "CONTIGUOUS"
-                    } else {
-                        "NONCONTIGUOUS"
-                    },
-                    target_seconds.map_or(String::new(), |t| {
-                        format!("\x20       targetRuntimeSeconds: {t}\n")
-                    }),
-                ),
-            )
-        }
-    };
+    let (extensions, task_parameter) = tasks.openjd(&mut parameters);
     let template = format!(
         "specificationVersion: jobtemplate-2023-09\n\
          {extensions}\
@@ -502,21 +669,38 @@ pub fn openjd_template(
          \x20     min: {threads}\n\
          \x20   - name: amount.worker.memory\n\
          \x20     min: {memory}\n\
+         \x20   attributes:\n\
+         \x20   - name: attr.worker.os.family\n\
+         \x20     anyOf: [linux]\n\
          {environment}\
          \x20 script:\n\
          \x20   actions:\n\
          \x20     onRun:\n\
          \x20       command: {executable}\n\
-         \x20       args: [{args}]\n",
-        name = quote(&name),
-        description = quote(description),
+         \x20       args: [{args}]\n\
+         \x20       cancelation:\n\
+         \x20         mode: NOTIFY_THEN_TERMINATE\n\
+         \x20         notifyPeriodInSeconds: {CANCEL_NOTIFY_SECONDS}\n",
+        name = quote(name),
+        description = quote(&description),
         threads = needs.threads,
         memory = needs.memory_mib(),
         parameters = parameters.concat(),
         args = args.join(", "),
     );
+    let bundle_values = std::iter::once("parameterValues:\n".to_string())
+        .chain(
+            values
+                .iter()
+                .map(|(name, value)| format!("- name: {}\n  value: {value}\n", quote(name))),
+        )
+        .collect();
     let values = serde_json::to_string_pretty(&values).expect("JSON values serialise") + "\n";
-    OpenJdJob { template, values }
+    OpenJdJob {
+        template,
+        values,
+        bundle_values,
+    }
 }
 
 /// A file written beside a job's: `JOB.yaml` and `params.json` give
@@ -565,11 +749,15 @@ impl SteppedRange {
     }
 
     /// A chunk's `--frames` from the farm's tokens for its first and last
-    /// frame.
+    /// frame; with no last frame, `start` is all the frames.
     fn chunk(&self, start: &str, end: &str) -> String {
+        let range = match end {
+            "" => start.to_string(),
+            end => format!("{start}-{end}"),
+        };
         match &self.step {
-            Some(step) => format!("{start}-{end}:{step}"),
-            None => format!("{start}-{end}"),
+            Some(step) => format!("{range}:{step}"),
+            None => range,
         }
     }
 }
@@ -585,15 +773,17 @@ fn shell_quote(arg: &str) -> String {
 
 /// An OpenCue outline in the JSON form PyOutline loads
 /// (`outline.loader.load_json`): one Shell layer over the frame range,
-/// chunked, each frame chunk running `--frames #FRAME_START#-#FRAME_END#`
-/// (a shell command, its arguments quoted), on the layer's service with the
-/// task's threads as cores, its memory bound as memory, and the submitter's
-/// `EXRCOMP_*` settings as its environment.
+/// chunked, on the layer's service with the task's threads as cores, its
+/// memory bound as memory, and the colour config and `EXRCOMP_*` settings
+/// as its environment. Each chunk runs `--frames ALL --chunk-from
+/// #FRAME_START#,N` (a shell command, its arguments quoted): exrcomp cuts
+/// the chunk from its first frame, as Cuebot before 1.0 sets #FRAME_END#
+/// to the first frame + N - 1 whatever the step.
 pub fn opencue_outline(
     exrcomp: &Path,
     command: &[String],
-    job: &FarmJob,
-    needs: &Needs,
+    (job, service): (&FarmJob, &str),
+    (name, needs): (&str, &Needs),
 ) -> Result<String> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "OpenCue")?;
     let mut line: Vec<String> = std::iter::once(exrcomp.to_string_lossy().as_ref())
@@ -602,9 +792,15 @@ pub fn opencue_outline(
         .collect();
     line.extend([
         "--frames".to_string(),
-        frames.chunk("#FRAME_START#", "#FRAME_END#"),
+        frames.chunk(&frames.range, ""),
+        "--chunk-from".to_string(),
+        format!("#FRAME_START#,{}", job.chunk),
     ]);
-    let name = format!("exrcomp-{}", command.first().map_or("job", String::as_str));
+    // OpenCue's job names are one word.
+    let name: String = name
+        .chars()
+        .map(|c| if c.is_whitespace() { '-' } else { c })
+        .collect();
     let outline = serde_json::json!({
         "name": name,
         "range": frames.frames(),
@@ -613,10 +809,10 @@ pub fn opencue_outline(
             "module": "outline.modules.shell.Shell",
             "command": line.join(" "),
             "chunk": job.chunk,
-            "service": job.service,
+            "service": service,
             "cores": needs.threads,
             "memory": format!("{}m", needs.memory_mib()),
-            "env": needs.environment,
+            "env": needs.settings(),
         }],
     });
     Ok(serde_json::to_string_pretty(&outline).expect("JSON values serialise") + "\n")
@@ -641,7 +837,7 @@ pub fn deadline_job(
     task: &TaskCommand,
     job: &FarmJob,
     needs: &Needs,
-    description: &str,
+    (name, description): (&str, String),
 ) -> Result<DeadlineJob> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
     // Key=value lines: a value holds no line break; the CommandLine plugin
@@ -673,11 +869,8 @@ pub fn deadline_job(
     ]);
     let mut info = vec![
         ("Plugin".to_string(), "CommandLine".to_string()),
-        (
-            "Name".to_string(),
-            format!("exrcomp {}", task.args.first().map_or("", String::as_str)),
-        ),
-        ("Comment".to_string(), value(description)?),
+        ("Name".to_string(), value(name)?),
+        ("Comment".to_string(), value(&description)?),
         ("Frames".to_string(), frames.frames()),
         ("ChunkSize".to_string(), job.chunk.to_string()),
     ];
@@ -692,7 +885,7 @@ pub fn deadline_job(
         info.push(("OutputDirectory0".into(), value(&folder.to_string_lossy())?));
         info.push(("OutputFilename0".into(), value(&name)?));
     }
-    for (i, (name, setting)) in needs.environment.iter().enumerate() {
+    for (i, (name, setting)) in needs.settings().iter().enumerate() {
         info.push((
             format!("EnvironmentKeyValue{i}"),
             value(&format!("{name}={setting}"))?,
@@ -754,8 +947,15 @@ mod tests {
             threads: 2,
             memory: 1,
             environment: BTreeMap::new(),
+            colour: ColourConfig::File("/s/c{{z}}.ocio".into()),
         };
-        let job = openjd_template(Path::new("/bin/exrcomp"), &task, &tasks, &needs, "d");
+        let job = openjd_template(
+            Path::new("/bin/exrcomp"),
+            &task,
+            &tasks,
+            &needs,
+            ("n", "d".into()),
+        );
         let args = r#"args: ["over", "{{Param.Input1}}", "--layer", "{{Param.Arg3}}", "-o", "{{Param.Output}}", "--frames", "{{Task.Param.Frames}}"]"#;
         assert!(job.template.contains(args), "{}", job.template);
         assert!(job
@@ -767,8 +967,24 @@ mod tests {
         let values: serde_json::Value = serde_json::from_str(&job.values).unwrap();
         assert_eq!(
             values,
-            serde_json::json!({"Exrcomp": "/bin/exrcomp", "Input1": "/s/a{{x}}.exr", "Output": "/s/o.exr"})
+            serde_json::json!({"Exrcomp": "/bin/exrcomp", "Input1": "/s/a{{x}}.exr", "Output": "/s/o.exr", "ColourConfig": "/s/c{{z}}.ocio"})
         );
+        assert!(job.template.contains("OCIO: \"{{Param.ColourConfig}}\""));
+        assert!(job.bundle_values.starts_with(
+            "parameterValues:\n- name: \"ColourConfig\"\n  value: \"/s/c{{z}}.ocio\"\n"
+        ));
+    }
+
+    #[test]
+    fn paths_lose_dots_lexically() {
+        for (path, clean) in [
+            ("/shot/plates/../renders/c.exr", "/shot/renders/c.exr"),
+            ("/shot/./a/b/../../c", "/shot/c"),
+            ("/../a", "/a"),
+            ("a/../../b", "../b"),
+        ] {
+            assert_eq!(normalise(Path::new(path)), Path::new(clean), "{path}");
+        }
         assert_eq!(
             beside(Path::new("a/job.yaml"), "params.json"),
             Path::new("a/job.params.json")

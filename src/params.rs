@@ -100,6 +100,21 @@ pub const DEFAULT_DWA_LEVEL: f32 = 45.0;
 
 /// `--threads`: at least one, at most `THREADS_PER_CORE` per core the
 /// machine has (more only costs memory and start-up).
+/// Most threads a farm task may ask for: a farm worker's cores, not the
+/// submitting machine's (the largest cloud hosts have 896 vCPUs).
+pub const FARM_THREADS: usize = 1024;
+
+/// `--threads` as parsed: at least one, at most `FARM_THREADS`; a local run
+/// is held to `parse_threads`'s bound once the command is known.
+pub fn parse_farm_threads(text: &str) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=FARM_THREADS).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "threads must be a whole number from 1 to {FARM_THREADS} (a farm worker's cores), not '{text}'"
+        )),
+    }
+}
+
 pub fn parse_threads(text: &str) -> Result<usize, String> {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let most = cores * THREADS_PER_CORE;

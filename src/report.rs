@@ -4,6 +4,9 @@ use crate::engine::stage_time::{self, StageTimes};
 use crate::error::Error;
 use crate::io::sequence::format_frame_list;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 pub struct Report {
@@ -11,6 +14,70 @@ pub struct Report {
     started: Instant,
     quiet: bool,
     json: bool,
+    /// The lines printed on standard output as frames finish, if any.
+    log: Option<FarmLog>,
+    frames: usize,
+    done: AtomicUsize,
+}
+
+/// What a run prints on standard output for a log or a farm to read
+/// (`--progress`): a line per frame, and the farm's own progress lines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FarmLog {
+    /// `frame 1001 written: /shot/out/c.1001.exr`.
+    Frames,
+    /// Those and `openjd_progress: 42.9`, `openjd_status: 3 of 7 frames done`
+    /// (Open Job Description's stdout messages).
+    Openjd,
+    /// Those and `Progress: 42%`, for a Deadline plugin's progress handler.
+    Deadline,
+}
+
+/// What became of a frame, as its line says. (Each new way a frame can end,
+/// "redone as stale" for one, is a variant and a word here.)
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    Written,
+    /// Complete already, kept (--resume).
+    Kept,
+    /// Written again over a file another job or tool made (--resume).
+    Redone,
+    Failed,
+}
+
+impl Outcome {
+    fn word(self) -> &'static str {
+        match self {
+            Outcome::Written => "written",
+            Outcome::Kept => "kept (--resume)",
+            Outcome::Redone => "redone (another job's file was there)",
+            Outcome::Failed => "failed",
+        }
+    }
+}
+
+/// The lines for frame `label`'s `outcome` (output `path`), the `done`th of
+/// `frames`, in `log`'s format.
+fn frame_lines(
+    log: FarmLog,
+    (label, outcome, path): (Option<i64>, Outcome, &Path),
+    done: usize,
+    frames: usize,
+) -> String {
+    let mut text = match label {
+        Some(frame) => format!("frame {frame} {}: {}\n", outcome.word(), path.display()),
+        None => format!("{}: {}\n", outcome.word(), path.display()),
+    };
+    let percent = 100.0 * done as f64 / frames.max(1) as f64;
+    match log {
+        FarmLog::Frames => {}
+        FarmLog::Openjd => text.push_str(&format!(
+            "openjd_progress: {percent:.1}\nopenjd_status: {done} of {} done\n",
+            count(frames, "frame")
+        )),
+        FarmLog::Deadline => text.push_str(&format!("Progress: {}%\n", percent.floor())),
+    }
+    text
 }
 
 /// What a finished run did.
@@ -72,7 +139,15 @@ impl Report {
             started: Instant::now(),
             quiet,
             json,
+            log: None,
+            frames,
+            done: AtomicUsize::new(0),
         }
+    }
+
+    /// The report with `log`'s lines on standard output as frames finish.
+    pub fn with_log(self, log: Option<FarmLog>) -> Self {
+        Report { log, ..self }
     }
 
     pub fn clear(&self) {
@@ -81,6 +156,20 @@ impl Report {
 
     pub fn frame_done(&self) {
         self.bar.inc(1);
+    }
+
+    /// A frame finished: the bar moves, and its lines go out (whole, at
+    /// once, so that a farm reads them as they come).
+    pub fn frame(&self, label: Option<i64>, outcome: Outcome, path: &Path) {
+        self.frame_done();
+        let Some(log) = self.log else {
+            return;
+        };
+        let done = self.done.fetch_add(1, Ordering::SeqCst) + 1;
+        let text = frame_lines(log, (label, outcome, path), done, self.frames);
+        let mut out = std::io::stdout().lock();
+        // A closed standard output stops no render.
+        let _ = out.write_all(text.as_bytes()).and_then(|()| out.flush());
     }
 
     /// A line above the progress bar (or plain, without one).
@@ -219,5 +308,23 @@ mod tests {
         assert_eq!(count(0, "frame"), "0 frames");
         assert_eq!(count(24, "file"), "24 files");
         assert_eq!(frame_rate(0.2641), "0.26 frames/s");
+    }
+
+    #[test]
+    fn frame_lines_say_the_frame_and_the_farm_its_progress() {
+        let frame = (Some(1001), Outcome::Written, Path::new("/o/c.1001.exr"));
+        assert_eq!(
+            frame_lines(FarmLog::Frames, frame, 1, 7),
+            "frame 1001 written: /o/c.1001.exr\n"
+        );
+        assert_eq!(
+            frame_lines(FarmLog::Openjd, frame, 3, 7),
+            "frame 1001 written: /o/c.1001.exr\nopenjd_progress: 42.9\nopenjd_status: 3 of 7 frames done\n"
+        );
+        let kept = (None, Outcome::Kept, Path::new("/o/c.exr"));
+        assert_eq!(
+            frame_lines(FarmLog::Deadline, kept, 2, 3),
+            "kept (--resume): /o/c.exr\nProgress: 66%\n"
+        );
     }
 }

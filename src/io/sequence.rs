@@ -280,6 +280,23 @@ const MAX_FRAMES: usize = 10_000_000;
 /// Parses `A`, `A-B`, `A-BxSTEP` (Nuke's), `A-B:STEP` and comma-separated
 /// lists of those. A frame listed twice and a range that runs backwards are
 /// errors: either would be a slip, and a frame written twice races itself.
+/// The chunk of `count` frames of `frames` that starts at frame `first`:
+/// frames cut into chunks of `count` in order, as a farm cuts them, so
+/// `first` must start one (a task named by another frame would overlap).
+pub fn chunk_from(frames: &[i64], first: i64, count: usize) -> Result<Vec<i64>> {
+    match frames.iter().position(|&f| f == first) {
+        Some(at) if at % count == 0 => Ok(frames[at..].iter().take(count).copied().collect()),
+        found => Err(Error::usage(format!(
+            "--chunk-from {first},{count}: frame {first} {} of --frames {}",
+            match found {
+                Some(_) => format!("does not start a chunk of {count}"),
+                None => "is not one".to_string(),
+            },
+            format_frame_list(frames)
+        ))),
+    }
+}
+
 pub fn parse_frame_list(text: &str) -> Result<Vec<i64>> {
     let mut frames = Vec::new();
     let mut seen = std::collections::HashSet::new();
@@ -455,6 +472,15 @@ mod tests {
             vec![1001, 1002, 1003, 1004]
         );
         assert_eq!(parse_frame_list("1-9:4").unwrap(), vec![1, 5, 9]);
+        let odd = parse_frame_list("1-12x2").unwrap();
+        assert_eq!(chunk_from(&odd, 5, 2).unwrap(), vec![5, 7]);
+        assert_eq!(chunk_from(&odd, 9, 2).unwrap(), vec![9, 11]);
+        assert_eq!(
+            chunk_from(&[1, 2, 3, 4, 5, 6, 7], 6, 5).unwrap(),
+            vec![6, 7]
+        );
+        assert!(chunk_from(&odd, 3, 2).is_err());
+        assert!(chunk_from(&odd, 2, 2).is_err());
         assert_eq!(
             parse_frame_list("1001,1005-1006").unwrap(),
             vec![1001, 1005, 1006]

@@ -330,7 +330,7 @@ fn an_opencue_outline_loads_in_pyoutline_and_its_chunks_match_a_local_run() {
     for part in [
         "<range>1-7</range>",
         "<chunk>3</chunk>",
-        "--resume --quiet --threads 1 --frames #FRAME_START#-#FRAME_END#</cmd>",
+        "--resume --threads 1 --frames 1-7 --chunk-from #FRAME_START#,3</cmd>",
     ] {
         assert!(spec.contains(part), "{part} not in\n{spec}");
     }
@@ -1124,4 +1124,482 @@ fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
     );
     assert_eq!(get(&info, "Frames"), "1-7x2");
     assert!(get(&plugin, "Arguments").ends_with("--frames <STARTFRAME>-<ENDFRAME>:2"));
+}
+
+/// Frames 1-12 of small fg and bg plates in `d`.
+fn twelve_plates(d: &Path) {
+    for kind in ["fg", "bg"] {
+        generate(
+            &d.join(format!("{kind}.####.exr")),
+            kind,
+            (32, 16),
+            &["--frames", "1-12"],
+        );
+    }
+}
+
+/// The frames a run's per-frame lines (standard output, not a terminal)
+/// say were written.
+fn written_frames(stdout: &[u8]) -> Vec<i64> {
+    String::from_utf8_lossy(stdout)
+        .lines()
+        .filter_map(|line| line.strip_prefix("frame "))
+        .filter(|rest| rest.contains(" written: "))
+        .map(|rest| rest.split(' ').next().unwrap().parse().unwrap())
+        .collect()
+}
+
+/// Cuebot before 1.0 sets #FRAME_END# to the chunk's first frame + chunk -
+/// 1 whatever the step (1.0 and later: the chunk's last frame). Either way
+/// each task runs only its chunk, cut by exrcomp from its first frame:
+/// every frame is written once, every task exits 0.
+#[test]
+fn opencue_chunks_render_every_frame_once_on_any_cuebot() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    twelve_plates(d);
+    for (frames, step, chunk) in [("1-12x2", 2, 2), ("1-12", 1, 5)] {
+        for old_cuebot in [true, false] {
+            let out = format!("o{step}{chunk}{old_cuebot}/c.####.exr");
+            let made = farm_in(
+                d,
+                &[],
+                &[
+                    "opencue",
+                    "--threads",
+                    "1",
+                    "--frames",
+                    frames,
+                    "--chunk",
+                    &chunk.to_string(),
+                    "-o",
+                    "cue.json",
+                ],
+                &["over", "fg.####.exr", "bg.####.exr", "-o", &out],
+            );
+            assert!(made.status.success(), "{}", stderr(&made));
+            let outline: serde_json::Value =
+                serde_json::from_slice(&std::fs::read(d.join("cue.json")).unwrap()).unwrap();
+            let cmd = outline["layers"][0]["command"].as_str().unwrap();
+            let all: Vec<i64> = (1..=12).step_by(step).collect();
+            let mut written = Vec::new();
+            for frames in all.chunks(chunk) {
+                let start = frames[0];
+                let end = match old_cuebot {
+                    true => start + chunk as i64 - 1,
+                    false => *frames.last().unwrap(),
+                };
+                let line = cmd
+                    .replace("#FRAME_START#", &start.to_string())
+                    .replace("#FRAME_END#", &end.to_string());
+                let task = Command::new("sh")
+                    .args(["-c", &line])
+                    .current_dir(d)
+                    .output()
+                    .unwrap();
+                assert!(task.status.success(), "{line}: {}", stderr(&task));
+                written.extend(written_frames(&task.stdout));
+            }
+            written.sort();
+            assert_eq!(
+                written, all,
+                "{frames} in chunks of {chunk}, old: {old_cuebot}"
+            );
+        }
+    }
+}
+
+/// Submitted from inside a symlinked show folder with `-o ../renders/...`:
+/// the job names the paths as the artist does (the link, no `..`), so a
+/// rule mapping the link's path moves the whole job, to a worker that has
+/// neither the link nor its target at the submitter's paths.
+#[test]
+fn paths_are_logical_and_normalised_so_mapping_rules_match_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let show = d.join("store/show");
+    std::fs::create_dir_all(show.join("plates")).unwrap();
+    plates(&show.join("plates"));
+    let link = d.join("link");
+    std::os::unix::fs::symlink(&show, &link).unwrap();
+    let made = exrcomp()
+        .args([
+            "farm", "openjd", "--frames", "1-7", "--chunk", "4", "-o", "job.yaml", "--",
+        ])
+        .args([
+            "over",
+            "fg.####.exr",
+            "bg.####.exr",
+            "-o",
+            "../renders/c.####.exr",
+        ])
+        .current_dir(link.join("plates"))
+        .env("PWD", link.join("plates"))
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    let values: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(show.join("plates/job.params.json")).unwrap())
+            .unwrap();
+    assert_eq!(
+        values["Output"],
+        s(&link.join("renders/c.####.exr")),
+        "{values}"
+    );
+    assert_eq!(values["Input1"], s(&link.join("plates/fg.####.exr")));
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    // The worker mounts the show elsewhere: nothing at the submitter's
+    // paths, the link's or its target's.
+    std::fs::rename(d.join("store"), d.join("mnt")).unwrap();
+    std::fs::remove_file(&link).unwrap();
+    let worker = d.join("mnt/show");
+    let rules = serde_json::json!({
+        "version": "pathmapping-1.0",
+        "path_mapping_rules": [{
+            "source_path_format": "POSIX",
+            "source_path": s(&link),
+            "destination_path": s(&worker),
+        }],
+    });
+    openjd(
+        &openjd_cli,
+        &[
+            "run",
+            "job.yaml",
+            "--step",
+            "exrcomp",
+            "--path-mapping-rules",
+            &rules.to_string(),
+        ],
+        &worker.join("plates"),
+    );
+    assert!(!link.exists() && !d.join("store").exists());
+    local_over(&worker.join("plates"));
+    for frame in 1..=7 {
+        assert_eq!(
+            std::fs::read(worker.join(format!("renders/c.{frame:04}.exr"))).unwrap(),
+            std::fs::read(worker.join(format!("plates/local/comp.{frame:04}.exr"))).unwrap(),
+            "frame {frame}"
+        );
+    }
+}
+
+/// A colour config of the same names as the built-in one's and other
+/// maths (none): what a worker's own `$OCIO` may be.
+const OTHER_CONFIG: &str = "ocio_profile_version: 2\n\
+roles:\n  default: ACEScg\n  scene_linear: ACEScg\n\
+file_rules:\n  - !<Rule> {name: Default, colorspace: default}\n\
+displays:\n  sRGB:\n    - !<View> {name: Raw, colorspace: ACEScg}\n\
+colorspaces:\n  - !<ColorSpace>\n    name: ACES2065-1\n  - !<ColorSpace>\n    name: ACEScg\n";
+
+/// The submitter's colour config travels with the job: a worker whose own
+/// `$OCIO` has the same names and other maths writes the submitter's pixels.
+#[test]
+fn a_worker_with_another_ocio_writes_the_submitters_pixels() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    std::fs::write(d.join("other.ocio"), OTHER_CONFIG).unwrap();
+    let convert = [
+        "colorconvert",
+        "fg.####.exr",
+        "--from",
+        "ACES2065-1",
+        "--to",
+        "ACEScg",
+    ];
+    let made = exrcomp()
+        .args(["farm", "openjd", "--frames", "1-2", "-o", "job.yaml", "--"])
+        .args(convert)
+        .args(["-o", "farm/c.####.exr"])
+        .env_remove("OCIO")
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", stderr(&made));
+    let template = std::fs::read_to_string(d.join("job.yaml")).unwrap();
+    assert!(
+        template.contains("OCIO: \"ocio://cg-config-latest\""),
+        "{template}"
+    );
+    let local = exrcomp()
+        .args(convert)
+        .args(["-o", "local/c.####.exr", "--frames", "1-2"])
+        .env_remove("OCIO")
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(local.status.success(), "{}", stderr(&local));
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    let values = format!("file://{}", s(&values(&d.join("job.yaml"))));
+    let run = Command::new(openjd_cli)
+        .args(["run", "job.yaml", "--step", "exrcomp", "-p", &values])
+        .env("OCIO", d.join("other.ocio"))
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stdout)
+    );
+    for frame in 1..=2 {
+        assert_eq!(
+            std::fs::read(d.join(format!("farm/c.{frame:04}.exr"))).unwrap(),
+            std::fs::read(d.join(format!("local/c.{frame:04}.exr"))).unwrap(),
+            "frame {frame}"
+        );
+    }
+}
+
+/// A farm task's threads are bounded by a farm worker's cores, not the
+/// submitter's; a local run stays held to this machine's.
+#[test]
+fn farm_threads_are_a_workers_not_the_submitters() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    let made = farm_in(
+        d,
+        &[],
+        &[
+            "openjd",
+            "--threads",
+            "256",
+            "--frames",
+            "1-2",
+            "-o",
+            "j.yaml",
+        ],
+        &over,
+    );
+    assert!(made.status.success(), "{}", stderr(&made));
+    let template = std::fs::read_to_string(d.join("j.yaml")).unwrap();
+    assert_eq!(amount(&template, "amount.worker.vcpu"), 256, "{template}");
+    let cores = std::thread::available_parallelism().unwrap().get();
+    if cores * 8 < 256 {
+        let local = exrcomp()
+            .args(["--threads", "256"])
+            .args(over)
+            .current_dir(d)
+            .output()
+            .unwrap();
+        assert_eq!(local.status.code(), Some(2), "{}", stderr(&local));
+        assert!(stderr(&local).contains("per core"), "{}", stderr(&local));
+    }
+    let too_many = farm_in(
+        d,
+        &[],
+        &[
+            "openjd",
+            "--threads",
+            "5000",
+            "--frames",
+            "1-2",
+            "-o",
+            "k.yaml",
+        ],
+        &over,
+    );
+    assert_eq!(too_many.status.code(), Some(2));
+    assert!(!d.join("k.yaml").exists());
+}
+
+/// Options of one farm are refused by the others (exit 2, nothing written).
+#[test]
+fn an_option_of_another_farm_is_a_usage_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    for args in [
+        &[
+            "deadline",
+            "--task-chunking",
+            "--frames",
+            "1-2",
+            "-o",
+            "x.job",
+        ][..],
+        &[
+            "deadline",
+            "--service",
+            "comp",
+            "--frames",
+            "1-2",
+            "-o",
+            "x.job",
+        ],
+        &[
+            "opencue",
+            "--target-runtime",
+            "60",
+            "--frames",
+            "1-2",
+            "-o",
+            "x.job",
+        ],
+        &["opencue", "--bundle", "b", "--frames", "1-2", "-o", "x.job"],
+        &[
+            "openjd",
+            "--service",
+            "comp",
+            "--frames",
+            "1-2",
+            "-o",
+            "x.job",
+        ],
+    ] {
+        let out = farm_in(d, &[], args, &over);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
+        assert!(
+            !d.join("x.job").exists() && !d.join("b").exists(),
+            "{args:?}"
+        );
+    }
+}
+
+/// Off a terminal a run says what became of each frame, --quiet or not;
+/// OpenJD tasks add openjd_progress / openjd_status lines and Deadline
+/// tasks `Progress: N%`.
+#[test]
+fn tasks_print_a_line_per_frame_and_their_farms_progress() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    let first = exrcomp()
+        .args(over)
+        .args(["--frames", "1-2", "-q"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(first.status.success(), "{}", stderr(&first));
+    assert_eq!(written_frames(&first.stdout), [1, 2], "{}", stdout(&first));
+    let again = exrcomp()
+        .args(over)
+        .args(["--frames", "1-3", "--resume", "--progress", "deadline"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    let text = stdout(&again);
+    for line in [
+        // The output as the command names it.
+        "frame 1 kept (--resume): c.0001.exr".to_string(),
+        "frame 3 written: c.0003.exr".to_string(),
+        "Progress: 33%".to_string(),
+        "Progress: 100%".to_string(),
+    ] {
+        assert!(text.lines().any(|l| l == line), "{line} not in\n{text}");
+    }
+    // A deadline task runs with --progress deadline, an OpenJD one with
+    // --progress openjd; an OpenCue one with the default lines.
+    let (_, plugin) = deadline_over(d, &[], &["--frames", "1-2", "-o", "p.job"], "dl/c.####.exr");
+    let arguments = &plugin.iter().find(|(k, _)| k == "Arguments").unwrap().1;
+    assert!(arguments.contains("--progress deadline"), "{arguments}");
+    let made = farm_in(
+        d,
+        &[],
+        &[
+            "openjd",
+            "--name",
+            "shot 10 comp",
+            "--frames",
+            "1-2",
+            "-o",
+            "j.yaml",
+        ],
+        &["over", "fg.####.exr", "bg.####.exr", "-o", "oj/c.####.exr"],
+    );
+    assert!(made.status.success(), "{}", stderr(&made));
+    let template = std::fs::read_to_string(d.join("j.yaml")).unwrap();
+    for part in [
+        "name: \"shot 10 comp\"\n",
+        "\"--progress\", \"openjd\"",
+        "    attributes:\n    - name: attr.worker.os.family\n      anyOf: [linux]\n",
+        "cancelation:\n          mode: NOTIFY_THEN_TERMINATE\n          notifyPeriodInSeconds: 120\n",
+    ] {
+        assert!(template.contains(part), "{part} not in\n{template}");
+    }
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    openjd(&openjd_cli, &["check", "j.yaml"], d);
+    let log = openjd(&openjd_cli, &["run", "j.yaml", "--step", "exrcomp"], d);
+    for part in [
+        "frame 2 written: ",
+        "openjd_progress: 100.0",
+        "openjd_status: 2 of 2 frames done",
+    ] {
+        assert!(log.contains(part), "{part} not in\n{log}");
+    }
+}
+
+/// `farm openjd --bundle DIR`: a job bundle as `deadline bundle submit`
+/// reads it, `template.yaml` (which `openjd check` accepts) and
+/// `parameter_values.yaml` (`parameterValues`, a name and a value each);
+/// run with those values it writes the frames.
+#[test]
+fn openjd_bundles_hold_a_template_and_its_parameter_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let made = farm_in(
+        d,
+        &[],
+        &["openjd", "--frames", "1-3", "--bundle", "bundle"],
+        &["over", "fg.####.exr", "bg.####.exr", "-o", "b/c.####.exr"],
+    );
+    assert!(made.status.success(), "{}", stderr(&made));
+    let template = std::fs::read_to_string(d.join("bundle/template.yaml")).unwrap();
+    let values = std::fs::read_to_string(d.join("bundle/parameter_values.yaml")).unwrap();
+    assert!(values.starts_with("parameterValues:\n- name: "), "{values}");
+    for name in ["Exrcomp", "Input1", "Input2", "Output"] {
+        assert!(
+            values.contains(&format!("- name: \"{name}\"\n  value: \"/")),
+            "{values}"
+        );
+        assert!(
+            template.contains(&format!("- name: {name}\n")),
+            "{template}"
+        );
+    }
+    let Some(openjd_cli) = peer("openjd") else {
+        return;
+    };
+    openjd(&openjd_cli, &["check", "bundle/template.yaml"], d);
+    // The bundle's values as `openjd run` takes them ({NAME: VALUE}), read
+    // by a YAML parser, not by hand.
+    let python = openjd_cli.with_file_name("python3");
+    let script = "import sys, json, yaml\n\
+        values = yaml.safe_load(open(sys.argv[1]))['parameterValues']\n\
+        print(json.dumps({v['name']: v['value'] for v in values}))\n";
+    let read = Command::new(python)
+        .args(["-c", script, "bundle/parameter_values.yaml"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(read.status.success(), "{}", stderr(&read));
+    std::fs::write(d.join("values.json"), &read.stdout).unwrap();
+    let run = Command::new(&openjd_cli)
+        .args(["run", "bundle/template.yaml", "--step", "exrcomp", "-p"])
+        .arg(format!("file://{}", s(&d.join("values.json"))))
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stdout)
+    );
+    assert!((1..=3).all(|f| d.join(format!("b/c.{f:04}.exr")).exists()));
+}
+
+fn stdout(out: &std::process::Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
 }
