@@ -3,7 +3,6 @@
 //! planning, with the size it would have, before it fills a volume
 //! (specs/overnight.md, "Refused before any work").
 
-use crate::error::{Error, Result};
 use exr::meta::attribute::IntegerBounds;
 
 /// How many times the largest input's pixels an output may have by
@@ -23,33 +22,27 @@ pub fn limit(asked: Option<u64>, largest: Option<u64>) -> Option<u64> {
     asked.or_else(|| largest.map(|p| p.saturating_mul(ENLARGEMENT).max(FLOOR)))
 }
 
-/// Refuses `frame`'s output `window` when it has more pixels than `limit`
-/// allows: a usage error naming its size.
-pub fn check(
-    asked: Option<u64>,
-    largest: Option<u64>,
-    window: IntegerBounds,
-    frame: i64,
-) -> Result<()> {
-    let Some(limit) = limit(asked, largest) else {
-        return Ok(());
-    };
+/// Why `window` (an output frame's) is refused, when it has more pixels
+/// than `limit` allows: its size and the limit. (`plan` leaves inputs so
+/// far apart that they span it to its other limits, which name them.)
+pub fn check(asked: Option<u64>, largest: Option<u64>, window: IntegerBounds) -> Option<String> {
+    let limit = limit(asked, largest)?;
     let (width, height) = (window.size.width() as u64, window.size.height() as u64);
     let pixels = width.saturating_mul(height);
     if pixels <= limit {
-        return Ok(());
+        return None;
     }
-    let rule = match (asked, largest) {
-        (Some(_), _) => "--max-output-pixels".to_string(),
-        (None, largest) => format!(
+    let rule = match asked {
+        Some(_) => "--max-output-pixels".to_string(),
+        None => format!(
             "{ENLARGEMENT} times the largest input's {} pixels, at least {FLOOR}",
             largest.unwrap_or(0)
         ),
     };
-    Err(Error::usage(format!(
-        "frame {frame}: the result would be {width} x {height} pixels ({pixels}), over the limit \
-         of {limit} ({rule}): check the size asked, or give --max-output-pixels N to allow it"
-    )))
+    Some(format!(
+        "the result's data window would be {width} x {height} pixels ({pixels}), over the \
+         limit of {limit} ({rule}): check the size asked, or give --max-output-pixels N to allow it"
+    ))
 }
 
 #[cfg(test)]
@@ -65,13 +58,11 @@ mod tests {
         assert_eq!(limit(Some(10), Some(8192 * 8192)), Some(10));
         assert_eq!(limit(None, None), None);
         let window = |w: usize, h: usize| IntegerBounds::new((0, 0), (w, h));
-        assert!(check(None, Some(64 * 64), window(4096, 4096), 1).is_ok());
-        assert!(check(None, Some(64 * 64), window(4096, 4097), 1).is_err());
-        let refused = check(None, Some(64 * 64), window(100_000, 100_000), 7).unwrap_err();
-        assert!(refused
-            .message
-            .contains("frame 7: the result would be 100000 x 100000 pixels (10000000000)"));
-        assert!(check(Some(100), None, window(10, 11), 1).is_err());
-        assert!(check(None, None, window(100_000, 100_000), 1).is_ok());
+        assert!(check(None, Some(64 * 64), window(4096, 4096)).is_none());
+        assert!(check(None, Some(64 * 64), window(4096, 4097)).is_some());
+        let refused = check(None, Some(64 * 64), window(100_000, 100_000)).unwrap();
+        assert!(refused.contains("would be 100000 x 100000 pixels (10000000000)"));
+        assert!(check(Some(100), None, window(10, 11)).is_some());
+        assert!(check(None, None, window(100_000, 100_000)).is_none());
     }
 }

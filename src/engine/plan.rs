@@ -470,7 +470,14 @@ fn plan_frame(job: &Job, sources: &FrameSources, part: Option<usize>) -> Result<
             read[i].size.area().max(display) as u64
         })
         .max();
-    super::output_limit::check(job.max_output_pixels, largest, window, frame)?;
+    // Inputs so far apart that they span it are an input problem, which
+    // the limits below (`too_big`) name; an operation's size is a usage error.
+    let spread = read.iter().copied().fold(IntegerBounds::zero(), union);
+    if let Some(message) = super::output_limit::check(job.max_output_pixels, largest, window)
+        .filter(|_| spread.size.area() < window.size.area())
+    {
+        return Err(Error::usage(format!("frame {frame}: {message}")));
+    }
 
     let mut header = match job.header_base {
         HeaderBase::Input(i) => header_of(i).clone(),

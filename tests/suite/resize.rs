@@ -758,17 +758,13 @@ fn an_output_far_larger_than_the_inputs_is_refused_at_planning() {
     );
     let out = d.join("o.exr");
     let cases: [(&str, &[&str], &str); 4] = [
-        (
-            "resize",
-            &["--size", "100000x100000"],
-            "the result would be 100000 x ",
-        ),
+        ("resize", &["--size", "100000x100000"], "would be 100000 x "),
         ("resize", &["--scale", "1000"], "64000 x 64000 pixels"),
         ("transform", &["--skew", "100,100"], "pixels ("),
         (
             "resize",
             &["--size", "128x128", "--max-output-pixels", "10000"],
-            "the result would be 128 x ",
+            "would be 128 x ",
         ),
     ];
     for dry in [true, false] {
