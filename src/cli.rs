@@ -525,6 +525,12 @@ pub struct RunArgs {
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
     #[arg(help_heading = "Frames and sequences", long, allow_hyphen_values = true, value_parser = parse_rows)]
     pub rows: Option<(i32, i32)>,
+    /// The most pixels an output frame may have (its data window); by
+    /// default 64 times the largest input's (data or display window), at
+    /// least 4096x4096, so that a typo's size is refused before it fills
+    /// a volume. Generated plates have none.
+    #[arg(help_heading = "Output", long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_output_pixels: Option<u64>,
     /// Run the operation on every part of a multi-part input instead of one,
     /// each part keeping its own channels, windows and attributes; for
     /// operations of one input (specs/file-format.md, "Parts").

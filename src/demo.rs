@@ -31,10 +31,87 @@ const COLUMNS: [(&str, &str); 6] = [
     ("diffrender", "diffrender"),
 ];
 
+/// The sequences the demo writes (`NAME.####.exr`), besides the sheet.
+const SEQUENCES: [&str; 9] = [
+    "ball",
+    "set",
+    "object",
+    "proxy",
+    "shadowed",
+    "moving",
+    "defocused",
+    "diffrender",
+    "comp",
+];
+/// The contact sheet's file name.
+const SHEET: &str = "contact-sheet.png";
+/// The file a demo writes into its folder before anything else: a folder
+/// holding it is one a demo made, whose files a demo may write again.
+pub const MARKER: &str = ".exrcomp-demo";
+
+/// Claims `dir` for the demo, before anything is written: a missing or
+/// empty folder, or one an earlier demo made (holding `MARKER`) and only
+/// files of the names a demo writes. Any other folder holds files the demo
+/// did not write, which it would replace or mix its own with: a usage error.
+/// A dry run checks and writes nothing.
+fn claim(dir: &Path, dry_run: bool) -> Result<()> {
+    let refuse = |why: String| {
+        Error::usage(format!(
+            "demo: {} {why}: give a new or empty folder (--dir), or one an earlier demo wrote",
+            dir.display()
+        ))
+    };
+    let names: Vec<String> = match std::fs::read_dir(dir) {
+        Ok(entries) => entries
+            .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()))
+            .collect::<std::io::Result<_>>()
+            .map_err(|e| Error::output(dir, None, e))?,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+        Err(e) if e.kind() == std::io::ErrorKind::NotADirectory => {
+            return Err(refuse("is not a folder".into()))
+        }
+        Err(e) => return Err(Error::output(dir, None, e)),
+    };
+    let marked = names.iter().any(|n| n == MARKER);
+    let mut foreign: Vec<&String> = names
+        .iter()
+        .filter(|n| !(marked && written_by_demo(n)))
+        .collect();
+    foreign.sort();
+    if let Some(first) = foreign.first() {
+        let more = match foreign.len() {
+            1 => String::new(),
+            n => format!(" and {} more", n - 1),
+        };
+        return Err(refuse(format!(
+            "holds files the demo did not write ({first}{more})"
+        )));
+    }
+    match dry_run {
+        true => Ok(()),
+        false => crate::io::writer::write_whole(&dir.join(MARKER), b"exrcomp demo folder\n"),
+    }
+}
+
+/// Whether `name` is one the demo writes: its marker, the contact sheet, a
+/// frame of one of its sequences, or a temporary file of its writers.
+fn written_by_demo(name: &str) -> bool {
+    let frame = |n: &str| {
+        n.rsplit_once('.').is_some_and(|(sequence, digits)| {
+            SEQUENCES.contains(&sequence)
+                && digits.len() >= 4
+                && digits.bytes().all(|b| b.is_ascii_digit())
+        })
+    };
+    let temporary = name.starts_with('.') && name.ends_with(".tmp") && name.contains(".exrcomp-");
+    name == MARKER || name == SHEET || temporary || name.strip_suffix(".exr").is_some_and(frame)
+}
+
 /// Writes the shot's plates into `dir`, composites them (the ball
 /// motion-blurred over the set defocused, one pass; the differential
 /// rendering shot), each effect alone on a few frames, and the contact sheet.
 pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArgs) -> Result<()> {
+    claim(dir, run.dry_run)?;
     let first = 1001;
     let last = first + length as i64 - 1;
     let pattern = |name: &str| {
@@ -155,7 +232,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &all)?;
     run_job(&job, "demo", &all, summary)?;
 
-    let sheet = dir.join("contact-sheet.png");
+    let sheet = dir.join(SHEET);
     let rows: Vec<(String, Vec<_>)> = shown
         .iter()
         .map(|&frame| {

@@ -29,7 +29,8 @@ impl Kind {
             Kind::Usage => 2,
             Kind::Input => 3,
             Kind::Output => 4,
-            // 128 + SIGINT, as shells report an interrupted command.
+            // 128 + SIGINT, as shells report an interrupted command (143,
+            // 128 + SIGTERM, after SIGTERM: `engine::interrupt::exit_code`).
             Kind::Interrupted => 130,
         }
     }

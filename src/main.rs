@@ -22,7 +22,11 @@ fn main() {
         .unwrap_or_else(|p| Err(exrcomp::error::Error::panicked(None, p)));
     if let Err(e) = result {
         eprintln!("exrcomp: error: {e}");
-        std::process::exit(e.kind.exit_code());
+        // Interrupted: 130 after Ctrl-C, 143 after SIGTERM.
+        std::process::exit(match e.kind {
+            exrcomp::error::Kind::Interrupted => exrcomp::engine::interrupt::exit_code(),
+            kind => kind.exit_code(),
+        });
     }
 }
 

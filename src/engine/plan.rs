@@ -96,6 +96,9 @@ pub struct Job {
     pub keep_going: bool,
     /// Write only rows `y0..y1` of each frame (a band, for `stitch`).
     pub rows: Option<(i32, i32)>,
+    /// `--max-output-pixels`: the most pixels an output frame may have
+    /// (`None`: the default, `output_limit::limit`).
+    pub max_output_pixels: Option<u64>,
     /// Run the graph on every part of the one input, one after the other,
     /// into the parts of one output (`--all-parts`).
     pub all_parts: bool,
@@ -502,6 +505,21 @@ fn plan_frame(
             limit - 2
         )));
     }
+    // Pixels over the limit: a typo's size, refused before anything is sized from it.
+    let largest = (0..inputs.len())
+        .map(|i| {
+            let display = header_of(i).shared_attributes.display_window.size.area();
+            read[i].size.area().max(display) as u64
+        })
+        .max();
+    // Inputs so far apart that they span it are an input problem, which
+    // the limits below (`too_big`) name; an operation's size is a usage error.
+    let spread = read.iter().copied().fold(IntegerBounds::zero(), union);
+    if let Some(message) = super::output_limit::check(job.max_output_pixels, largest, window)
+        .filter(|_| spread.size.area() < window.size.area())
+    {
+        return Err(Error::usage(format!("frame {frame}: {message}")));
+    }
 
     let mut header = match job.header_base {
         HeaderBase::Input(i) => header_of(i).clone(),
@@ -534,6 +552,7 @@ fn plan_frame(
     // (as oiiotool's --eraseattrib does), then set over it.
     job.attributes.erase(&mut header);
     super::provenance::stamp(&mut header);
+    crate::io::stitch::erase_band_record(&mut header);
     edit(&mut header)?;
     let files = inputs
         .iter()
@@ -655,7 +674,7 @@ fn plan_frame(
     // The output's block rows: scanline blocks, or tile rows.
     let lines = output_grid(&header).block.y();
     let written = match job.rows {
-        Some(rows) => band(&mut header, rows)?,
+        Some(rows) => band(&mut header, rows, frame)?,
         None => window,
     };
     let computed = computed(written, window, graph, &windows, lines);
@@ -889,9 +908,10 @@ pub fn input_level(job: &Job, file: &ExrFile, part: usize) -> Result<Level> {
         .map_err(|m| file.error(format!("--level: {m}")))
 }
 
-/// Narrows `header` to the band of rows `y0..y1` (on its block grid) and
-/// returns the band.
-fn band(header: &mut Header, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
+/// Narrows `header` to the band of rows `y0..y1` (on its block grid),
+/// recording the whole window and `frame` it is a band of (for `stitch`),
+/// and returns the band.
+fn band(header: &mut Header, (y0, y1): (i32, i32), frame: i64) -> Result<IntegerBounds> {
     let window = header.data_window();
     let (top, bottom) = (window.position.y(), window.end().y());
     let lines = header.compression.scan_lines_per_block() as i32;
@@ -902,6 +922,7 @@ fn band(header: &mut Header, (y0, y1): (i32, i32)) -> Result<IntegerBounds> {
              {lines}-line block boundaries counted from row {top}"
         )));
     }
+    crate::io::stitch::mark_band(header, window, frame);
     header.own_attributes.layer_position = exr::math::Vec2(window.position.x(), y0);
     header.layer_size = exr::math::Vec2(window.size.width(), (y1 - y0) as usize);
     header.chunk_count = ((y1 - y0) as usize).div_ceil(lines as usize);

@@ -31,13 +31,60 @@ pub struct IndexedChunk {
 }
 
 /// Where a file is written before it is complete: hidden, in the same folder
-/// (so the final rename stays on one file system), unique to this process.
+/// (so the final rename stays on one file system), and unique to this
+/// writer across threads, processes, PID namespaces and hosts: the PID
+/// (which `remove_stale_temporaries` reads), the host's name, and 64 random
+/// bits (two containers' processes can share a PID and a host name).
 pub fn temporary_path(path: &Path) -> PathBuf {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    path.with_file_name(format!(".{name}.exrcomp-{}.tmp", std::process::id()))
+    path.with_file_name(format!(
+        ".{name}.exrcomp-{}-{}-{:016x}.tmp",
+        std::process::id(),
+        host_name(),
+        random_u64()
+    ))
+}
+
+/// This host's name, made safe for a file name ("host" when unknown).
+fn host_name() -> String {
+    let mut buffer = [0u8; 256];
+    // SAFETY: the buffer is writable for its length; gethostname writes
+    // at most that many bytes.
+    let ok = unsafe { libc::gethostname(buffer.as_mut_ptr().cast(), buffer.len()) } == 0;
+    let name: String = buffer
+        .iter()
+        .take_while(|&&b| ok && b != 0)
+        .map(|&b| match b {
+            b'a'..=b'z' | b'A'..=b'Z' | b'0'..=b'9' | b'.' | b'_' => b as char,
+            _ => '_',
+        })
+        .take(64)
+        .collect();
+    match name.is_empty() {
+        true => "host".into(),
+        false => name,
+    }
+}
+
+/// 64 bits from the kernel's random source; should it fail, the time in
+/// nanoseconds and a count of this process's calls, which still differ
+/// between writers here.
+fn random_u64() -> u64 {
+    static CALLS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let mut bytes = [0u8; 8];
+    // SAFETY: the buffer is writable for its length.
+    let got = unsafe { libc::getrandom(bytes.as_mut_ptr().cast(), bytes.len(), 0) };
+    if got == bytes.len() as isize {
+        return u64::from_ne_bytes(bytes);
+    }
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64);
+    let calls = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    nanos ^ calls.rotate_left(48) ^ u64::from(std::process::id()).rotate_left(24)
 }
 
 /// Writes a small file whole (a farm job, a bench record, a PNG) under its
@@ -50,14 +97,35 @@ pub fn write_whole(path: &Path, bytes: &[u8]) -> Result<()> {
     })
 }
 
-/// Creates the temporary file `path` and holds an exclusive lock on it
-/// while it is open, which tells every other exrcomp (another host's, over
-/// NFS, or another PID namespace's, where the name's PID says nothing) that
-/// it is being written.
+/// Creates the temporary file `path`, new (never another writer's, which
+/// truncating would destroy), and holds an exclusive lock on it while it is
+/// open, which tells every other exrcomp (another host's, over NFS, or
+/// another PID namespace's, where the name's PID says nothing) that it is
+/// being written. Another run's clean-up may remove the file between its
+/// creation and the lock (it was unlocked then): the file locked must still
+/// be the one at `path`, else it is made again under that name.
 fn create_locked(path: &Path) -> std::io::Result<File> {
-    let file = File::create(path)?;
-    file.try_lock().map_err(std::io::Error::from)?;
-    Ok(file)
+    use std::os::unix::fs::MetadataExt;
+    loop {
+        let file = fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(path)?;
+        // Only a clean-up can hold it (the name is this writer's): for the
+        // moment it takes to remove it, after which the check below sees it gone.
+        file.lock()?;
+        let locked = file.metadata()?;
+        match fs::symlink_metadata(path) {
+            Ok(now) if (now.dev(), now.ino()) == (locked.dev(), locked.ino()) => return Ok(file),
+            Ok(_) => {
+                return Err(std::io::Error::other(
+                    "another writer took the temporary name",
+                ))
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
+            Err(e) => return Err(e),
+        }
+    }
 }
 
 /// Removes temporary files in `dir` left by exrcomp runs that no longer exist
@@ -80,7 +148,7 @@ pub fn remove_stale_temporaries(dir: &Path, inputs: &FileSet) {
             .strip_prefix('.')
             .and_then(|n| n.strip_suffix(".tmp"))
             .and_then(|n| n.rsplit_once(".exrcomp-"))
-            .and_then(|(_, pid)| pid.parse::<u32>().ok());
+            .and_then(|(_, id)| id.split('-').next()?.parse::<u32>().ok());
         let Some(pid) = pid else {
             continue;
         };

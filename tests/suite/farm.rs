@@ -427,6 +427,95 @@ fn bands_rendered_apart_stitch_into_the_whole_render_byte_for_byte() {
     assert!(!p("gap.exr").exists());
 }
 
+/// A band records the whole window and frame it is part of: a set missing
+/// its first or last band, or mixing frames, or files that are not bands,
+/// is refused naming the file, and nothing is written.
+#[test]
+fn stitch_refuses_bands_that_do_not_make_one_whole_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = |n: &str| d.join(n);
+    generate(&p("in.####.exr"), "bg", (64, 128), &["--frames", "1-2"]);
+    ok(&[
+        "transcode",
+        s(&p("in.####.exr")),
+        "-o",
+        s(&p("whole.####.exr")),
+        "-q",
+    ]);
+    for (name, rows) in [("top", "0-64"), ("mid", "64-112"), ("end", "112-128")] {
+        let out = p(&format!("{name}.####.exr"));
+        ok(&[
+            "transcode",
+            s(&p("in.####.exr")),
+            "-o",
+            s(&out),
+            "--rows",
+            rows,
+            "-q",
+        ]);
+    }
+    let refused = |bands: &[&str], file: &str, words: &str| {
+        let mut args = vec!["stitch".to_string()];
+        args.extend(bands.iter().map(|b| s(&p(b)).to_string()));
+        args.extend(["-o".to_string(), s(&p("x.exr")).to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(3), "{bands:?}: {}", stderr(&out));
+        let text = stderr(&out);
+        assert_eq!(text.lines().count(), 1, "{text}");
+        assert!(
+            text.contains(file) && text.contains(words),
+            "{bands:?}: {text}"
+        );
+        assert!(!p("x.exr").exists(), "{bands:?} wrote a file");
+    };
+    refused(
+        &["top.0001.exr", "mid.0001.exr"],
+        "mid.0001.exr",
+        "a band is missing after it",
+    );
+    refused(
+        &["end.0001.exr", "mid.0001.exr"],
+        "mid.0001.exr",
+        "a band is missing before it",
+    );
+    refused(
+        &["top.0001.exr", "mid.0002.exr", "end.0001.exr"],
+        "mid.0002.exr",
+        "another frame",
+    );
+    refused(
+        &["whole.0001.exr", "whole.0002.exr"],
+        "whole.0001.exr",
+        "is not a band",
+    );
+    refused(
+        &["top.0001.exr", "whole.0002.exr"],
+        "whole.0002.exr",
+        "another frame",
+    );
+    // The whole set, of either frame, is the whole render byte for byte:
+    // the record is not carried into it.
+    for frame in ["0001", "0002"] {
+        let band = |name: &str| p(&format!("{name}.{frame}.exr"));
+        let joined = p(&format!("joined.{frame}.exr"));
+        ok(&[
+            "stitch",
+            s(&band("end")),
+            s(&band("top")),
+            s(&band("mid")),
+            "-o",
+            s(&joined),
+        ]);
+        assert_eq!(
+            std::fs::read(&joined).unwrap(),
+            std::fs::read(p(&format!("whole.{frame}.exr"))).unwrap(),
+            "frame {frame}"
+        );
+    }
+}
+
 /// Templates that would fail on every task are never written: the command is
 /// parsed by exrcomp's own parser and checked over all the frames first.
 #[test]

@@ -430,3 +430,63 @@ fn the_readme_s_two_commands_make_the_examples_runnable() {
         );
     }
 }
+
+/// The demo writes only into a new or empty folder, or one an earlier demo
+/// wrote (its marker file and demo names only); any other is refused before
+/// anything is written, its files as they were.
+#[test]
+fn the_demo_refuses_a_folder_holding_files_it_did_not_write() {
+    let dir = tempfile::tempdir().unwrap();
+    let listing = |d: &Path| {
+        let mut names: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    };
+    let demo = |d: &Path| {
+        run(&[
+            "demo",
+            "--dir",
+            s(d),
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--length",
+            "1",
+            "-q",
+        ])
+    };
+    // Someone's own comp frame, and someone's notes.
+    for (folder, file) in [("theirs", "comp.1001.exr"), ("notes", "notes.txt")] {
+        let d = dir.path().join(folder);
+        std::fs::create_dir(&d).unwrap();
+        std::fs::write(d.join(file), "not the demo's").unwrap();
+        let out = demo(&d);
+        assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+        let text = stderr(&out);
+        assert_eq!(text.lines().count(), 1, "{text}");
+        assert!(
+            text.contains(file) && text.contains("did not write"),
+            "{text}"
+        );
+        assert_eq!(listing(&d), [file], "something was written");
+        assert_eq!(std::fs::read(d.join(file)).unwrap(), b"not the demo's");
+    }
+    // A new folder, then the same folder again: the demo's own.
+    let shot = dir.path().join("shot");
+    for round in 0..2 {
+        let out = demo(&shot);
+        assert!(out.status.success(), "round {round}: {}", stderr(&out));
+    }
+    assert!(listing(&shot).contains(&"comp.1001.exr".to_string()));
+    // Its own folder with a file of someone else's in it.
+    std::fs::write(shot.join("notes.txt"), "mine").unwrap();
+    let before = listing(&shot);
+    let out = demo(&shot);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("notes.txt"), "{}", stderr(&out));
+    assert_eq!(listing(&shot), before);
+}

@@ -873,3 +873,61 @@ fn half_size_equals_oiiotool_on_every_public_image() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     eprintln!("{checked} public images resized as oiiotool does");
 }
+
+/// A size far over any real enlargement (a typo) is refused at planning
+/// with the size it would have, in a dry run too, and nothing is written;
+/// `--max-output-pixels` sets the limit (here lower, to keep the test small).
+#[test]
+fn an_output_far_larger_than_the_inputs_is_refused_at_planning() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("sm.exr");
+    let img = random_rgba(4, 0, 0, 64, 64, Kind::Half, false);
+    write_image(
+        &input,
+        &img,
+        compression("zip"),
+        exr::meta::attribute::LineOrder::Increasing,
+    );
+    let out = d.join("o.exr");
+    let cases: [(&str, &[&str], &str); 4] = [
+        ("resize", &["--size", "100000x100000"], "would be 100000 x "),
+        ("resize", &["--scale", "1000"], "64000 x 64000 pixels"),
+        ("transform", &["--skew", "100,100"], "pixels ("),
+        (
+            "resize",
+            &["--size", "128x128", "--max-output-pixels", "10000"],
+            "would be 128 x ",
+        ),
+    ];
+    for dry in [true, false] {
+        for (op, args, words) in cases {
+            let mut all = vec![op, s(&input), "-o", s(&out)];
+            all.extend(args);
+            if dry {
+                all.push("--dry-run");
+            }
+            let ended = limited_within(&all, std::time::Duration::from_secs(60));
+            assert_eq!(ended.code, Some(2), "{all:?}: {}", ended.stderr);
+            assert!(
+                ended.stderr.contains(words) && ended.stderr.contains("over the limit"),
+                "{all:?}: {}",
+                ended.stderr
+            );
+            assert_eq!(ended.stderr.lines().count(), 1, "{}", ended.stderr);
+            assert!(!out.exists());
+        }
+    }
+    // Under the limit it raises, the same enlargement is written.
+    let all = [
+        "resize",
+        s(&input),
+        "-o",
+        s(&out),
+        "--size",
+        "128x128",
+        "-q",
+    ];
+    ok(&[&all[..], &["--max-output-pixels", "30000"]].concat());
+    assert_eq!(read_image(&out).width, 128);
+}
