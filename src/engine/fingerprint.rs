@@ -15,7 +15,7 @@ use xxhash_rust::xxh3::Xxh3;
 
 /// The EXR header attribute (a string) and the review media's text field
 /// holding it.
-pub const ATTRIBUTE: &str = "exrcomp:fingerprint";
+pub const ATTRIBUTE: &str = crate::io::attributes::FINGERPRINT;
 
 /// What the same job writes changes with the program: a new version redoes
 /// every frame, rather than keep frames whose bytes it would not write.

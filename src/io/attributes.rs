@@ -10,6 +10,9 @@ use exr::math::Vec2;
 use exr::meta::attribute::{AttributeValue, FloatRect, IntegerBounds, KeyCode, Rational, Text};
 use exr::meta::header::Header;
 
+/// The attribute recording which job made a frame (src/engine/fingerprint.rs).
+pub const FINGERPRINT: &str = "exrcomp:fingerprint";
+
 /// One `--attrib`: a name and its typed value.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Attrib {

@@ -6,6 +6,7 @@
 //! that covers that window exactly, and the joined file carries no record,
 //! so it is the whole render byte for byte.
 
+use super::attributes::FINGERPRINT;
 use super::reader::ExrFile;
 use super::writer::IndexedChunk;
 use super::writer::{write_file, Parts};
@@ -52,14 +53,26 @@ fn band_record(header: &Header) -> Option<(IntegerBounds, Vec<u8>)> {
 
 /// Why `header` is not a band of the same image as `first`, if it is not:
 /// every attribute but the data window must be the same (the band record
-/// included: the same whole window and frame). Further checks of what
-/// made a band (the job) belong here.
+/// included: the same whole window and frame), the job's fingerprint too.
 fn differs(first: &Header, header: &Header) -> Option<&'static str> {
     // The rows differ, the rest does not.
     let mut own = header.own_attributes.clone();
     own.layer_position.1 = first.own_attributes.layer_position.y();
     if band_record(header) != band_record(first) {
         return Some("is a band of another frame or image than the first band (its exrcomp:bandOf or exrcomp:bandFrame differ)");
+    }
+    // Of the same frame and window, but of another job (whose fingerprint
+    // also holds the frame: the frame is the one to name first).
+    let print = |h: &Header| {
+        h.own_attributes
+            .other
+            .get(&Text::from(FINGERPRINT))
+            .cloned()
+    };
+    if print(header) != print(first) {
+        return Some(
+            "was made by another job than the first band (its exrcomp:fingerprint differs)",
+        );
     }
     let same = header.channels == first.channels
         && header.compression == first.compression

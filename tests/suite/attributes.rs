@@ -23,7 +23,7 @@ fn header_text(exrheader: &Path, path: &Path) -> String {
         .filter(|l| {
             in_history |= l.starts_with("Exif:ImageHistory ");
             let owned = in_history
-                || ["file ", "Software ", "chunkCount "]
+                || ["file ", "Software ", "chunkCount ", "exrcomp:fingerprint "]
                     .iter()
                     .any(|p| l.starts_with(p));
             in_history &= !l.ends_with('"');

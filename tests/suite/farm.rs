@@ -485,6 +485,23 @@ fn stitch_refuses_bands_that_do_not_make_one_whole_frame() {
         "mid.0002.exr",
         "another frame",
     );
+    // A band of another job (a graded plate's rows 64-112).
+    ok(&[
+        "grade",
+        s(&p("in.####.exr")),
+        "-o",
+        s(&p("graded.####.exr")),
+        "--gain",
+        "2",
+        "--rows",
+        "64-112",
+        "-q",
+    ]);
+    refused(
+        &["top.0001.exr", "graded.0001.exr", "end.0001.exr"],
+        "graded.0001.exr",
+        "another job",
+    );
     refused(
         &["whole.0001.exr", "whole.0002.exr"],
         "whole.0001.exr",
