@@ -360,134 +360,305 @@ fn in_part(error: Error, part: usize, header: &Header) -> Error {
 /// Opens the inputs of `sources.frame` and plans its output through
 /// `graph`; `part` forces the part of input 0 read (`--all-parts`), and a
 /// part an operation refuses is then carried as it is (`carry_as_is`).
+/// The steps, each a function below, in the order their refusals come.
 fn plan_frame(
     job: &Job,
     sources: &FrameSources,
     part: Option<usize>,
     graph: &Graph,
 ) -> Result<FramePlan> {
-    let forced = part;
     let frame = sources.frame;
-    let label = job.frame_label(frame);
-    let mut parts = Vec::new();
-    let inputs: Vec<Arc<ExrFile>> = job
-        .inputs
-        .iter()
-        .zip(&sources.inputs)
-        .enumerate()
-        .map(|(i, (pattern, source))| {
-            let at = source.file_frame();
-            let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
-            let part = match forced.filter(|_| i == 0) {
-                Some(part) => part,
-                None => choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?,
-            };
-            file.check_codec(part)?;
-            parts.push(part);
-            Ok(Arc::new(file))
-        })
-        .collect::<Result<_>>()?;
-    let header_of = |i: usize| inputs[i].header(parts[i]);
-    let located = |message: String| {
-        let files: Vec<String> = inputs
+    let opened = Opened::open(job, sources, part)?;
+    check_luminance(job, &opened, graph)?;
+    let channels = node_channels(&opened, graph);
+    if let Some(refusal) = refusal(&opened, graph, &channels) {
+        return match part {
+            Some(_) => carry_as_is(job, sources, part, refusal),
+            None => Err(refusal),
+        };
+    }
+    check_subsampled_nodes(&opened, graph, &channels)?;
+    let geometry = Geometry::of(job, &opened, graph)?;
+    let window = geometry.window;
+    let (mut header, fingerprint) = output_header(job, &opened, graph, &channels, &geometry)?;
+    let (carried, carried_headers) = carried_parts(job, &opened, &header, &fingerprint)?;
+    check_layout(job, &opened, &header, carried)?;
+    // The output's block rows: scanline blocks, or tile rows.
+    let lines = output_grid(&header).block.y();
+    let written = match job.rows {
+        Some(rows) => band(&mut header, rows, frame)?,
+        None => window,
+    };
+    let computed = computed(written, window, graph, &geometry.windows, lines);
+    let block_bytes = check_block_sizes(job, &opened, &header, window, lines)?;
+    let regions =
+        Regions::new(graph, computed, &geometry.windows).map_err(|m| opened.located(m))?;
+    if job.rows.is_some() && !regions.shared() {
+        return Err(Error::usage(
+            "--rows renders bands of graphs that keep the image's size only: a resize or \
+             transform streams its input at another rate",
+        ));
+    }
+    let cost = StripCost::new(&opened, graph, &channels, &regions, computed);
+    let strip_rows = strip_rows(job, &opened, &cost, window, lines, block_bytes)?;
+    let Opened {
+        inputs,
+        parts,
+        deep,
+        levels,
+        ..
+    } = opened;
+    Ok(FramePlan {
+        frame,
+        label: job.frame_label(frame),
+        output: job.output.path(frame),
+        inputs,
+        parts,
+        levels,
+        read: geometry.read,
+        deep,
+        header,
+        channels,
+        windows: geometry.windows,
+        strip_rows,
+        computed,
+        regions,
+        carried,
+        carried_headers,
+        every_part: None,
+        fingerprint,
+        carried_as_is: None,
+    })
+}
+
+/// A frame's inputs, open: per input its file, the part and level read,
+/// and what flattens it if it is deep.
+struct Opened<'a> {
+    frame: i64,
+    sources: &'a FrameSources,
+    inputs: Vec<Arc<ExrFile>>,
+    parts: Vec<usize>,
+    deep: Vec<Option<Arc<DeepInput>>>,
+    levels: Vec<Level>,
+}
+
+impl<'a> Opened<'a> {
+    /// Opens each input's frame and chooses its part (`forced` for input
+    /// 0), its deep flattening and its level.
+    fn open(job: &Job, sources: &'a FrameSources, forced: Option<usize>) -> Result<Self> {
+        let mut parts = Vec::new();
+        let inputs: Vec<Arc<ExrFile>> = job
+            .inputs
             .iter()
+            .zip(&sources.inputs)
+            .enumerate()
+            .map(|(i, (pattern, source))| {
+                let at = source.file_frame();
+                let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
+                let part = match forced.filter(|_| i == 0) {
+                    Some(part) => part,
+                    None => choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?,
+                };
+                file.check_codec(part)?;
+                parts.push(part);
+                Ok(Arc::new(file))
+            })
+            .collect::<Result<_>>()?;
+        let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
+            .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
+            .collect::<Result<_>>()?;
+        let levels = read_levels(job, &inputs, &parts)?;
+        Ok(Opened {
+            frame: sources.frame,
+            sources,
+            inputs,
+            parts,
+            deep,
+            levels,
+        })
+    }
+
+    fn header_of(&self, i: usize) -> &Header {
+        self.inputs[i].header(self.parts[i])
+    }
+
+    fn black(&self, i: usize) -> bool {
+        matches!(self.sources.inputs[i], Source::Black(_))
+    }
+
+    /// The data window read of input `i`. A black input has no data
+    /// anywhere: an empty data window.
+    fn input_window(&self, i: usize) -> IntegerBounds {
+        match (self.sources.inputs[i], &self.deep[i]) {
+            (Source::Black(_), _) => IntegerBounds::zero(),
+            (_, Some(deep)) => deep.window,
+            _ => self.levels[i].window(self.header_of(i)),
+        }
+    }
+
+    /// An input error naming the frame and every input file.
+    fn located(&self, message: String) -> Error {
+        let files: Vec<String> = (self.inputs.iter())
             .map(|f| f.path.display().to_string())
             .collect();
         Error::new(
             Kind::Input,
-            format!("frame {frame} ({}): {message}", files.join(", ")),
+            format!("frame {} ({}): {message}", self.frame, files.join(", ")),
         )
-    };
-    let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
-        .map(|i| deep_input(job, i, sources, &inputs[i], parts[i]))
-        .collect::<Result<_>>()?;
-    let levels = read_levels(job, &inputs, &parts)?;
-    // A black input has no data anywhere: an empty data window.
-    let input_window = |i: usize| match (sources.inputs[i], &deep[i]) {
-        (Source::Black(_), _) => IntegerBounds::zero(),
-        (_, Some(deep)) => deep.window,
-        _ => levels[i].window(header_of(i)),
-    };
+    }
 
-    // The conversion to RGB is set up from the first frame (of each part,
-    // with --all-parts: `commands::luminance_inputs`); a later frame that is
-    // luminance where it was not would be read as its Y, RY, BY channels.
-    if let Some(i) = (0..inputs.len()).find(|&i| {
-        deep[i].is_none()
-            && luminance_chroma::is_luminance(header_of(i), job.view.as_deref())
+    /// The file the output header comes from, for messages.
+    fn header_file(&self, job: &Job) -> Option<&ExrFile> {
+        match job.header_base {
+            HeaderBase::Input(i) => Some(&self.inputs[i]),
+            HeaderBase::New(_) => None,
+        }
+    }
+}
+
+/// The conversion to RGB is set up from the first frame (of each part,
+/// with --all-parts: `commands::luminance_inputs`); a later frame that is
+/// luminance where it was not would be read as its Y, RY, BY channels.
+fn check_luminance(job: &Job, opened: &Opened, graph: &Graph) -> Result<()> {
+    let luminance = (0..opened.inputs.len()).find(|&i| {
+        opened.deep[i].is_none()
+            && luminance_chroma::is_luminance(opened.header_of(i), job.view.as_deref())
             && graph.reads_unconverted(i)
-    }) {
-        return Err(inputs[i].error(
+    });
+    match luminance {
+        Some(i) => Err(opened.inputs[i].error(
             "is luminance-only or luminance/chroma (Y, RY, BY) but the sequence's first frame \
              is RGB, and the operations are set up from the first frame: make the frames alike, \
              or run this frame on its own",
-        ));
+        )),
+        None => Ok(()),
     }
-    let channels = graph.evaluate(
-        |i| match &deep[i] {
+}
+
+/// Per graph node, its channels.
+fn node_channels(opened: &Opened, graph: &Graph) -> Vec<Vec<ChannelDescription>> {
+    graph.evaluate(
+        |i| match &opened.deep[i] {
             Some(deep) => deep.channels.clone(),
-            None => header_of(i).channels.list.to_vec(),
+            None => opened.header_of(i).channels.list.to_vec(),
         },
         |op, args| {
             let lists: Vec<&[ChannelDescription]> = args.iter().map(Vec::as_slice).collect();
             op.channels(&lists)
         },
-    );
-    for node in &graph.nodes {
-        if let Node::Op {
+    )
+}
+
+/// The first operation that refuses its inputs' channels (a blur of no
+/// colour), located.
+fn refusal(opened: &Opened, graph: &Graph, channels: &[Vec<ChannelDescription>]) -> Option<Error> {
+    graph.nodes.iter().find_map(|node| {
+        let Node::Op {
             op, inputs: args, ..
         } = node
-        {
-            let lists: Vec<&[ChannelDescription]> =
-                args.iter().map(|&n| channels[n].as_slice()).collect();
-            if let Err(message) = op.check(&lists) {
-                let refusal = located(node.locate(message));
-                return match forced {
-                    Some(_) => carry_as_is(job, sources, forced, refusal),
-                    None => Err(refusal),
-                };
-            }
-        }
-    }
-    // Subsampled channels are carried, or turned into RGB first
-    // (`luminance_chroma`); an operation never reads them as they are.
+        else {
+            return None;
+        };
+        let lists: Vec<&[ChannelDescription]> =
+            args.iter().map(|&n| channels[n].as_slice()).collect();
+        let message = op.check(&lists).err()?;
+        Some(opened.located(node.locate(message)))
+    })
+}
+
+/// Subsampled channels are carried, or turned into RGB first
+/// (`luminance_chroma`); an operation never reads them as they are.
+fn check_subsampled_nodes(
+    opened: &Opened,
+    graph: &Graph,
+    channels: &[Vec<ChannelDescription>],
+) -> Result<()> {
     for (n, node) in graph.nodes.iter().enumerate() {
         let subsampled = channels[n].iter().find(|c| c.sampling != Vec2(1, 1));
         if let (Node::Op { .. }, Some(c)) = (node, subsampled) {
-            return Err(located(format!(
+            return Err(opened.located(format!(
                 "channel {} is subsampled and reaches an operation unconverted: a sequence's \
                  frames must be all luminance/chroma or all RGB, as its first frame decides",
                 c.name
             )));
         }
     }
-    // Display windows first: an op whose geometry follows them (a resize's
-    // scale) learns them before it is asked for data windows and regions.
-    let displays = graph.display_windows(|i| Display::of(header_of(i)));
-    let (display, resized) = displays[graph.output()].clone().map_err(located)?;
-    let read: Vec<IntegerBounds> = (0..inputs.len()).map(input_window).collect();
-    let mut windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
-    // A result of black inputs alone (`--missing black` on its only input)
-    // is a transparent black frame shaped as their nearest frames are, as a
-    // missing frame is black over its format in Nuke, not a frame left out.
-    let black = |i: usize| matches!(sources.inputs[i], Source::Black(_));
-    if windows[graph.output()].size.area() == 0 && (0..inputs.len()).any(black) {
-        let shaped = |i: usize| match black(i) {
-            true => levels[i].window(header_of(i)),
-            false => read[i],
-        };
-        windows = graph.evaluate(shaped, |op, args| op.data_window(args));
+    Ok(())
+}
+
+/// Where the frame's pixels are: per input the window read, per node its
+/// data window, the output's, and its display window if an op changed it.
+struct Geometry {
+    read: Vec<IntegerBounds>,
+    windows: Vec<IntegerBounds>,
+    window: IntegerBounds,
+    /// The output's display window and pixel aspect, and whether an
+    /// operation changed them.
+    display: Display,
+    resized: bool,
+}
+
+impl Geometry {
+    /// The windows, the result's refused where it is empty, beyond OpenEXR's
+    /// coordinates or over the output-size limit.
+    fn of(job: &Job, opened: &Opened, graph: &Graph) -> Result<Self> {
+        let frame = opened.frame;
+        let inputs = opened.inputs.len();
+        // Display windows first: an op whose geometry follows them (a resize's
+        // scale) learns them before it is asked for data windows and regions.
+        let displays = graph.display_windows(|i| Display::of(opened.header_of(i)));
+        let (display, resized) = displays[graph.output()]
+            .clone()
+            .map_err(|m| opened.located(m))?;
+        let read: Vec<IntegerBounds> = (0..inputs).map(|i| opened.input_window(i)).collect();
+        let mut windows = graph.evaluate(|i| read[i], |op, args| op.data_window(args));
+        // A result of black inputs alone (`--missing black` on its only input)
+        // is a transparent black frame shaped as their nearest frames are, as a
+        // missing frame is black over its format in Nuke, not a frame left out.
+        if windows[graph.output()].size.area() == 0 && (0..inputs).any(|i| opened.black(i)) {
+            let shaped = |i: usize| match opened.black(i) {
+                true => opened.levels[i].window(opened.header_of(i)),
+                false => read[i],
+            };
+            windows = graph.evaluate(shaped, |op, args| op.data_window(args));
+        }
+        let window = windows[graph.output()];
+        if window.size.area() == 0 {
+            return Err(Error::new(
+                Kind::Input,
+                format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
+            ));
+        }
+        check_coordinates(opened, window)?;
+        // Pixels over the limit: a typo's size, refused before anything is sized from it.
+        let largest = (0..inputs)
+            .map(|i| {
+                let display = opened.header_of(i).shared_attributes.display_window;
+                read[i].size.area().max(display.size.area()) as u64
+            })
+            .max();
+        // Inputs so far apart that they span it are an input problem, which
+        // the limits below (`too_big`) name; an operation's size is a usage error.
+        let spread = read.iter().copied().fold(IntegerBounds::zero(), union);
+        if let Some(message) = super::output_limit::check(job.max_output_pixels, largest, window)
+            .filter(|_| spread.size.area() < window.size.area())
+        {
+            return Err(Error::usage(format!("frame {frame}: {message}")));
+        }
+        Ok(Geometry {
+            read,
+            windows,
+            window,
+            display,
+            resized,
+        })
     }
-    let window = windows[graph.output()];
-    if window.size.area() == 0 {
-        return Err(Error::new(
-            Kind::Input,
-            format!("frame {frame}: the result's data window is empty (inputs black or not overlapping): nothing to write"),
-        ));
-    }
-    // OpenEXR's coordinates (ImfHeader.cpp's sanity check; the exr crate's,
-    // which the writer applies, holds the end past the last pixel below the
-    // limit): an input far out, resized or moved, can leave them.
+}
+
+/// OpenEXR's coordinates (ImfHeader.cpp's sanity check; the exr crate's,
+/// which the writer applies, holds the end past the last pixel below the
+/// limit): an input far out, resized or moved, can leave them.
+fn check_coordinates(opened: &Opened, window: IntegerBounds) -> Result<()> {
     let limit = i64::from(i32::MAX / 2);
     let (x0, y0) = (
         i64::from(window.position.x()),
@@ -498,31 +669,29 @@ fn plan_frame(
         y0 + window.size.height() as i64 - 1,
     );
     if [x0, y0].iter().any(|&v| v <= -limit) || [x1, y1].iter().any(|&v| v + 1 >= limit) {
-        return Err(located(format!(
+        return Err(opened.located(format!(
             "the result's data window ({x0} {y0}) - ({x1} {y1}) would not fit OpenEXR's 32-bit \
              coordinates (pixels from {} to {})",
             1 - limit,
             limit - 2
         )));
     }
-    // Pixels over the limit: a typo's size, refused before anything is sized from it.
-    let largest = (0..inputs.len())
-        .map(|i| {
-            let display = header_of(i).shared_attributes.display_window.size.area();
-            read[i].size.area().max(display) as u64
-        })
-        .max();
-    // Inputs so far apart that they span it are an input problem, which
-    // the limits below (`too_big`) name; an operation's size is a usage error.
-    let spread = read.iter().copied().fold(IntegerBounds::zero(), union);
-    if let Some(message) = super::output_limit::check(job.max_output_pixels, largest, window)
-        .filter(|_| spread.size.area() < window.size.area())
-    {
-        return Err(Error::usage(format!("frame {frame}: {message}")));
-    }
+    Ok(())
+}
 
+/// The output's header, flat, of the output node's channels and window,
+/// with its blocks, compression, the user's attribute edits and the
+/// frame's fingerprint (returned too, for the other parts).
+fn output_header(
+    job: &Job,
+    opened: &Opened,
+    graph: &Graph,
+    channels: &[Vec<ChannelDescription>],
+    geometry: &Geometry,
+) -> Result<(Header, String)> {
+    let frame = opened.frame;
     let mut header = match job.header_base {
-        HeaderBase::Input(i) => header_of(i).clone(),
+        HeaderBase::Input(i) => opened.header_of(i).clone(),
         HeaderBase::New(display) => {
             Header::new(Text::from("image"), display.size, Default::default())
                 .with_display_window(display)
@@ -532,37 +701,42 @@ fn plan_frame(
     let mut output_channels = channels[graph.output()].clone();
     output_channels.sort_by(|a, b| a.name.bytes().cmp(b.name.bytes()));
     header.channels = exr::meta::attribute::ChannelList::new(output_channels.into());
-    if resized {
-        header.shared_attributes.display_window = display.window;
-        header.shared_attributes.pixel_aspect = display.pixel_aspect;
+    if geometry.resized {
+        header.shared_attributes.display_window = geometry.display.window;
+        header.shared_attributes.pixel_aspect = geometry.display.pixel_aspect;
     }
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;
-    let header_file = match job.header_base {
-        HeaderBase::Input(i) => format!(" ({})", inputs[i].path.display()),
-        HeaderBase::New(_) => String::new(),
-    };
-    let edit = |header: &mut Header| {
-        job.attributes
-            .set(header, frame)
-            .map_err(|m| Error::usage(format!("frame {frame}{header_file}: {m}")))
-    };
+    let header_file = (opened.header_file(job))
+        .map(|f| format!(" ({})", f.path.display()))
+        .unwrap_or_default();
     // Erased before the stamp, so that an input's history can be dropped
     // (as oiiotool's --eraseattrib does), then set over it.
     job.attributes.erase(&mut header);
     super::provenance::stamp(&mut header);
     crate::io::stitch::erase_band_record(&mut header);
-    edit(&mut header)?;
-    let files = inputs
-        .iter()
-        .map(Arc::as_ref)
-        .chain((deep.iter().flatten()).flat_map(|d| d.files[1..].iter().map(|(f, _)| f.as_ref())));
-    let fingerprint = fingerprint::of_frame(job, sources, files);
+    (job.attributes.set(&mut header, frame))
+        .map_err(|m| Error::usage(format!("frame {frame}{header_file}: {m}")))?;
+    let merged = (opened.deep.iter().flatten()).flat_map(|d| d.files[1..].iter());
+    let files = (opened.inputs.iter().map(Arc::as_ref)).chain(merged.map(|(f, _)| f.as_ref()));
+    let fingerprint = fingerprint::of_frame(job, opened.sources, files);
     fingerprint::stamp(&mut header, &fingerprint);
     if let Some(compression) = job.compression {
         header.compression = compression;
     }
+    header.blocks = output_blocks(job, &header);
+    header.line_order = LineOrder::Increasing;
+    let window = geometry.window;
+    header.layer_size = window.size;
+    header.own_attributes.layer_position = window.position;
+    header.chunk_count = compute_chunk_count(header.compression, window.size, header.blocks);
+    Ok((header, fingerprint))
+}
+
+/// The output's blocks: tiles asked for, or those of the header's input
+/// (not for bands, which `stitch` joins as scanline blocks), else scanlines.
+fn output_blocks(job: &Job, header: &Header) -> BlockDescription {
     // A new header (generate, demo) has the exr crate's default blocks.
     let input_blocks = match job.header_base {
         HeaderBase::Input(_) => header.blocks,
@@ -574,83 +748,99 @@ fn plan_frame(
         (OutputBlocks::FollowInput, BlockDescription::Tiles(tiles), None) => Some(tiles.tile_size),
         _ => None,
     };
-    header.blocks = match tile_size {
+    match tile_size {
         Some(tile_size) => BlockDescription::Tiles(TileDescription {
             tile_size,
             level_mode: LevelMode::Singular,
             rounding_mode: RoundingMode::Down,
         }),
         None => BlockDescription::ScanLines,
-    };
-    header.line_order = LineOrder::Increasing;
-    header.layer_size = window.size;
-    header.own_attributes.layer_position = window.position;
-    header.chunk_count = compute_chunk_count(header.compression, window.size, header.blocks);
+    }
+}
 
+/// The input whose other parts the output carries (`FramePlan::carried`),
+/// and its part headers with the user's edits and the fingerprint.
+fn carried_parts(
+    job: &Job,
+    opened: &Opened,
+    header: &Header,
+    fingerprint: &str,
+) -> Result<(Option<usize>, Vec<Header>)> {
     let carried = match job.header_base {
         HeaderBase::Input(i)
-            if inputs[i].meta.headers.len() > 1
-                && matches!(sources.inputs[i], Source::Frame(_))
-                && !job.all_parts =>
+            if opened.inputs[i].meta.headers.len() > 1 && !opened.black(i) && !job.all_parts =>
         {
             Some(i)
         }
         _ => None,
     };
-    let carried_headers = match carried {
-        Some(i) => inputs[i]
-            .meta
-            .headers
-            .iter()
-            .map(|part| {
-                let mut part = part.clone();
-                job.attributes.carry(&mut part, &header);
-                fingerprint::stamp(&mut part, &fingerprint);
-                part
-            })
-            .collect(),
-        None => Vec::new(),
+    let Some(i) = carried else {
+        return Ok((None, Vec::new()));
     };
-    // OpenEXR requires every part of a file to share its display window and
-    // pixel aspect ratio (ImfMultiPartOutputFile refuses the file else): a
-    // geometry op on one part cannot leave the others as they are.
-    if let Some(i) = carried {
-        let shown = |h: &Header| {
-            let a = &h.shared_attributes;
-            (a.display_window, a.pixel_aspect.to_bits())
-        };
-        let mismatch = (carried_headers.iter().enumerate())
-            .find(|&(p, h)| p != parts[i] && shown(h) != shown(&header));
-        if let Some((_, other)) = mismatch {
-            let describe = |h: &Header| {
-                let a = &h.shared_attributes;
-                format!(
-                    "{} at pixel aspect {}",
-                    box_text(a.display_window),
-                    a.pixel_aspect
-                )
-            };
-            return Err(Error::usage(format!(
-                "frame {frame}: {} has {} parts, which OpenEXR requires to share one display \
-                 window and pixel aspect ratio: the result's, {}, is not its other parts', {}: \
-                 give --all-parts to apply the operations to every part",
-                inputs[i].path.display(),
-                carried_headers.len(),
-                describe(&header),
-                describe(other),
-            )));
-        }
-    }
+    let carried_headers: Vec<Header> = (opened.inputs[i].meta.headers.iter())
+        .map(|part| {
+            let mut part = part.clone();
+            job.attributes.carry(&mut part, header);
+            fingerprint::stamp(&mut part, fingerprint);
+            part
+        })
+        .collect();
+    check_shared_display(opened, i, header, &carried_headers)?;
+    Ok((carried, carried_headers))
+}
+
+/// OpenEXR requires every part of a file to share its display window and
+/// pixel aspect ratio (ImfMultiPartOutputFile refuses the file else): a
+/// geometry op on one part of input `i` cannot leave the others as they are.
+fn check_shared_display(
+    opened: &Opened,
+    i: usize,
+    header: &Header,
+    carried_headers: &[Header],
+) -> Result<()> {
+    let shown = |h: &Header| {
+        let a = &h.shared_attributes;
+        (a.display_window, a.pixel_aspect.to_bits())
+    };
+    let mismatch = (carried_headers.iter().enumerate())
+        .find(|&(p, h)| p != opened.parts[i] && shown(h) != shown(header));
+    let Some((_, other)) = mismatch else {
+        return Ok(());
+    };
+    let describe = |h: &Header| {
+        let a = &h.shared_attributes;
+        format!(
+            "{} at pixel aspect {}",
+            box_text(a.display_window),
+            a.pixel_aspect
+        )
+    };
+    Err(Error::usage(format!(
+        "frame {}: {} has {} parts, which OpenEXR requires to share one display \
+         window and pixel aspect ratio: the result's, {}, is not its other parts', {}: \
+         give --all-parts to apply the operations to every part",
+        opened.frame,
+        opened.inputs[i].path.display(),
+        carried_headers.len(),
+        describe(header),
+        describe(other),
+    )))
+}
+
+/// What the output's layout allows: bands of single-part scanline files,
+/// and subsampled channels in scanline parts of the compressions that
+/// keep them.
+fn check_layout(job: &Job, opened: &Opened, header: &Header, carried: Option<usize>) -> Result<()> {
     if let (OutputBlocks::Tiles(_), Some(_)) = (job.blocks, job.rows) {
         return Err(Error::usage(
             "--rows writes bands of scanline files only (stitch joins scanline blocks): drop --tile",
         ));
     }
     if let (Some(i), Some(_)) = (carried, job.rows) {
-        return Err(inputs[i].error(format!(
+        return Err(opened.inputs[i].error(format!(
             "has {} parts: --rows renders bands of single-part outputs only, and the other parts \
              would be lost",
-            inputs[i].meta.headers.len()
+            opened.inputs[i].meta.headers.len()
         )));
     }
     // OpenEXR allows subsampled channels in scanline parts only.
@@ -659,31 +849,37 @@ fn plan_frame(
          (or the write node's tile)"
             .to_string()
     });
-    if let Some(message) = crate::io::subsampling::any(&header)
+    if let Some(message) = crate::io::subsampling::any(header)
         .then(|| tiled.or_else(|| crate::io::subsampling::refused(header.compression)))
         .flatten()
     {
-        let source = match job.header_base {
-            HeaderBase::Input(i) => inputs[i].path.display().to_string(),
-            HeaderBase::New(_) => "the result".into(),
+        let source = match opened.header_file(job) {
+            Some(file) => file.path.display().to_string(),
+            None => "the result".into(),
         };
         return Err(Error::usage(format!(
-            "frame {frame}: {source} has subsampled channels for the output: {message}"
+            "frame {}: {source} has subsampled channels for the output: {message}",
+            opened.frame
         )));
     }
-    // The output's block rows: scanline blocks, or tile rows.
-    let lines = output_grid(&header).block.y();
-    let written = match job.rows {
-        Some(rows) => band(&mut header, rows, frame)?,
-        None => window,
-    };
-    let computed = computed(written, window, graph, &windows, lines);
-    // Never write a file the reader would refuse, nor allocate for it. From
-    // inputs, a result far wider or taller than any of them (inputs far apart) is an
-    // input problem; a generated image asked that wide, a usage error.
-    let too_big = |message: String| match inputs.is_empty() {
-        true => Error::usage(format!("frame {frame}: {message}")),
-        false => located(message),
+    Ok(())
+}
+
+/// Never write a file the reader would refuse, nor allocate for it: the
+/// output's blocks (of `lines` rows), tiles and chunk count checked against
+/// the reader's limits. Returns the bytes of one block of rows.
+fn check_block_sizes(
+    job: &Job,
+    opened: &Opened,
+    header: &Header,
+    window: IntegerBounds,
+    lines: usize,
+) -> Result<usize> {
+    // From inputs, a result far wider or taller than any of them (inputs far
+    // apart) is an input problem; a generated image asked that wide, a usage error.
+    let too_big = |message: String| match opened.inputs.is_empty() {
+        true => Error::usage(format!("frame {}: {message}", opened.frame)),
+        false => opened.located(message),
     };
     let block_bytes = window
         .size
@@ -710,8 +906,9 @@ fn plan_frame(
             .saturating_mul(header.channels.bytes_per_pixel);
         if tile_bytes > MAX_BLOCK_BYTES {
             return Err(Error::usage(format!(
-                "frame {frame}: tiles of {}x{} pixels would take {tile_bytes} bytes each, over \
+                "frame {}: tiles of {}x{} pixels would take {tile_bytes} bytes each, over \
                  the {MAX_BLOCK_BYTES}-byte limit of a block: give a smaller --tile",
+                opened.frame,
                 tiles.tile_size.width(),
                 tiles.tile_size.height()
             )));
@@ -719,7 +916,7 @@ fn plan_frame(
     }
     // Its offset table is held while it is written, 8 bytes a chunk: the
     // one thing that grows with its height.
-    let chunks = output_grid(&header).blocks;
+    let chunks = output_grid(header).blocks;
     let chunks = chunks.x().saturating_mul(chunks.y());
     if chunks > MAX_OUTPUT_CHUNKS {
         let message = format!(
@@ -730,34 +927,58 @@ fn plan_frame(
         );
         return Err(too_big(message));
     }
-    let regions = Regions::new(graph, computed, &windows).map_err(located)?;
-    if job.rows.is_some() && !regions.shared() {
-        return Err(Error::usage(
-            "--rows renders bands of graphs that keep the image's size only: a resize or \
-             transform streams its input at another rate",
-        ));
+    Ok(block_bytes)
+}
+
+/// The bytes a strip of some rows holds. The nodes hold the strip's rows
+/// (their region's span of them: the output's rows, but behind a resize)
+/// across their region's width (those alive at once, `Graph::peak`); a flat
+/// input's chunks are decoded across its own width (wider than the result's
+/// when it is clipped), whole blocks covering the strip's rows. (A deep
+/// input's chunks are decoded in batches of their own size.)
+struct StripCost<'a> {
+    graph: &'a Graph,
+    regions: &'a Regions,
+    top: i32,
+    /// Per node, the bytes of a pixel.
+    pixel_bytes: Vec<usize>,
+    /// Per flat input: its node, the bytes of a row decoded, its block's rows.
+    decoded: Vec<(Option<usize>, usize, usize)>,
+}
+
+impl<'a> StripCost<'a> {
+    fn new(
+        opened: &Opened,
+        graph: &'a Graph,
+        channels: &[Vec<ChannelDescription>],
+        regions: &'a Regions,
+        computed: IntegerBounds,
+    ) -> Self {
+        let pixel_bytes: Vec<usize> = channels
+            .iter()
+            .map(|list| list.iter().map(|c| c.sample_type.bytes_per_sample()).sum())
+            .collect();
+        let decoded: Vec<(Option<usize>, usize, usize)> = (0..opened.inputs.len())
+            .filter(|&i| opened.deep[i].is_none())
+            .map(|i| {
+                let header = opened.header_of(i);
+                let row = header.channels.bytes_per_pixel * opened.input_window(i).size.width();
+                (graph.input_node(i), row, opened.levels[i].block.y())
+            })
+            .collect();
+        StripCost {
+            graph,
+            regions,
+            top: computed.position.y(),
+            pixel_bytes,
+            decoded,
+        }
     }
-    // The nodes hold the strip's rows (their region's span of them: the
-    // output's rows, but behind a resize) across their region's width (those
-    // alive at once, `Graph::peak`); a flat input's chunks are decoded across
-    // its own width (wider than the result's when it is clipped), whole
-    // blocks covering the strip's rows. (A deep input's chunks are decoded
-    // in batches of their own size.)
-    let pixel_bytes: Vec<usize> = channels
-        .iter()
-        .map(|list| list.iter().map(|c| c.sample_type.bytes_per_sample()).sum())
-        .collect();
-    let decoded: Vec<(Option<usize>, usize, usize)> = (0..inputs.len())
-        .filter(|&i| deep[i].is_none())
-        .map(|i| {
-            let header = header_of(i);
-            let row = header.channels.bytes_per_pixel * input_window(i).size.width();
-            (graph.input_node(i), row, levels[i].block.y())
-        })
-        .collect();
-    let strip_bytes = |rows: usize| {
-        let top = computed.position.y();
-        let spans = regions.spans(graph, top..top.saturating_add(rows as i32));
+
+    /// The bytes a strip of `rows` rows from the top holds.
+    fn bytes(&self, rows: usize) -> usize {
+        let (graph, regions) = (self.graph, self.regions);
+        let spans = regions.spans(graph, self.top..self.top.saturating_add(rows as i32));
         // Decode reads a zone from its top to its span's end, or from its
         // bottom to its span's start when it reads it bottom-up (a flip):
         // the span, but where readers disagree or a turn near 90 degrees
@@ -773,16 +994,28 @@ fn plan_frame(
             })
         };
         let nodes = graph.peak(|n| {
-            pixel_bytes[n]
+            self.pixel_bytes[n]
                 .saturating_mul(regions.rect(n).size.width())
                 .saturating_mul(held(Some(n)))
         });
-        decoded
-            .iter()
+        (self.decoded.iter())
             .map(|&(node, row, lines)| row.saturating_mul(held(node) + lines))
             .fold(nodes, usize::saturating_add)
-    };
-    let smallest = strip_bytes(lines);
+    }
+}
+
+/// The rows of a strip: whole blocks of `lines` rows, about `STRIP_BYTES`
+/// of output, all it holds within `HELD_BYTES`; a frame whose one block of
+/// rows is over `MAX_STRIP_BYTES` is refused.
+fn strip_rows(
+    job: &Job,
+    opened: &Opened,
+    cost: &StripCost,
+    window: IntegerBounds,
+    lines: usize,
+    block_bytes: usize,
+) -> Result<usize> {
+    let smallest = cost.bytes(lines);
     if smallest > MAX_STRIP_BYTES {
         let message = format!(
             "the result would be {} x {} pixels: a strip of one {lines}-row block, decoded and \
@@ -795,21 +1028,21 @@ fn plan_frame(
         );
         // Blame the widest input (the first of the widest): its data window
         // makes the strips that wide, or inputs far apart do.
-        let widest = (0..inputs.len())
+        let widest = (0..opened.inputs.len())
             .rev()
-            .max_by_key(|&i| input_window(i).size.width());
+            .max_by_key(|&i| opened.input_window(i).size.width());
         return Err(match widest {
-            Some(i) => inputs[i].error(message),
+            Some(i) => opened.inputs[i].error(message),
             None => Error::usage(message),
         });
     }
     // Strips of whole tile rows of the tiled inputs too, when that stays
     // small: their tiles then decode straight into the strip, none carried.
-    let grain = (0..inputs.len())
-        .filter(|&i| deep[i].is_none() && header_of(i).blocks.has_tiles())
-        .map(|i| levels[i].block.y())
+    let grain = (0..opened.inputs.len())
+        .filter(|&i| opened.deep[i].is_none() && opened.header_of(i).blocks.has_tiles())
+        .map(|i| opened.levels[i].block.y())
         .fold(lines, lcm);
-    let grain = match strip_bytes(grain) <= HELD_BYTES {
+    let grain = match cost.bytes(grain) <= HELD_BYTES {
         true => grain,
         false => lines,
     };
@@ -820,34 +1053,14 @@ fn plan_frame(
     // Behind a reduction (a 16K plate resized to 4K) a strip holds far more
     // input than output: all it holds is kept within `HELD_BYTES` then,
     // down to one block.
-    while blocks > 1 && strip_bytes(blocks * lines) > HELD_BYTES {
+    while blocks > 1 && cost.bytes(blocks * lines) > HELD_BYTES {
         blocks = (blocks / 2).max(1);
     }
     // Asked for (tests of strip boundaries), within the same memory bound.
     if let Some(rows) = job.strip_rows {
         blocks = blocks.min(rows.div_ceil(lines).max(1));
     }
-    Ok(FramePlan {
-        frame,
-        label,
-        output: job.output.path(frame),
-        inputs,
-        parts,
-        levels,
-        read,
-        deep,
-        header,
-        channels,
-        windows,
-        strip_rows: blocks * lines,
-        computed,
-        regions,
-        carried,
-        carried_headers,
-        every_part: None,
-        fingerprint,
-        carried_as_is: None,
-    })
+    Ok(blocks * lines)
 }
 
 /// `--all-parts` on a part the operations refuse (`refusal`: no colour to
