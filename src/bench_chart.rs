@@ -2,7 +2,7 @@
 //! wall-time axis of its own, the baseline's beside them, medians as bars.
 //! One layout of shapes, drawn as SVG or rasterised into a PNG.
 
-use crate::io::png::Rgb8;
+use crate::io::media::{png_file, Rgb8};
 use serde_json::Value;
 use std::fmt::Write;
 
@@ -225,5 +225,5 @@ pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
             }
         }
     }
-    crate::io::png::encode(&image)
+    png_file(&image)
 }

@@ -408,7 +408,7 @@ pub struct RunArgs {
     /// libdeflate's effort for ZIP and ZIPS output, 1 (fastest) to 12
     /// (smallest); noisy low-byte halves always take ISA-L's fastest level.
     /// The default 2 writes files within 2.5% of OpenEXR's size.
-    #[arg(help_heading = "Output", long, default_value_t = crate::io::zip::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
+    #[arg(help_heading = "Output", long, default_value_t = crate::io::deflate::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
     /// DWAA and DWAB output's compression level, written as the file's
     /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as

@@ -2,6 +2,7 @@
 
 use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
 use crate::engine::fingerprint;
+use crate::engine::frame_plan::{plan_parts, FramePlan};
 use crate::engine::graph::NodeId;
 use crate::engine::graph::{Graph, GraphBuilder, Node, Op};
 use crate::engine::interrupt;
@@ -10,7 +11,7 @@ use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{
-    plan_parts, FramePlan, FrameSources, HeaderBase, Job, OutputBlocks, Review, Source,
+    FrameSources, HeaderBase, Job, OutputBlocks, Review, SlateFrame, Source,
 };
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
@@ -32,7 +33,7 @@ use crate::ops::layers::Selection;
 use crate::ops::resize::{passes, Filter, Target};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::report::{count, FarmLog, Outcome, Report, Summary};
-use crate::slate::{Slate, SlateFrame};
+use crate::slate::Slate;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -502,7 +503,7 @@ fn sourced_job(
         header_base: HeaderBase::New(display),
         blocks: OutputBlocks::FollowInput,
         strip_rows: None,
-        zip_level: crate::io::zip::DEFAULT_LEVEL,
+        zip_level: crate::io::deflate::DEFAULT_LEVEL,
         resume: false,
         keep_going: false,
         rows: None,

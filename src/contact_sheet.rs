@@ -7,8 +7,8 @@
 use crate::engine::decode::{decode_all, InputCursor};
 use crate::error::{Error, Result};
 use crate::font;
+use crate::io::media::{png_file, Rgb8};
 use crate::io::parts::choose_part;
-use crate::io::png::{self, Rgb8};
 use crate::io::reader::ExrFile;
 use crate::io::tiles;
 use std::path::{Path, PathBuf};
@@ -74,7 +74,7 @@ pub fn write(
             }
         }
     }
-    crate::io::writer::write_whole(path, &png::encode(&sheet))
+    crate::io::writer::write_whole(path, &png_file(&sheet))
 }
 
 fn display_window(file: &Path) -> Result<(usize, usize)> {

@@ -3,7 +3,7 @@
 //! other node (they are sources: ops without inputs).
 
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

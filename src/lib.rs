@@ -19,3 +19,4 @@ pub mod ops;
 pub mod params;
 pub mod report;
 pub mod slate;
+pub mod stage_time;

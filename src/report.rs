@@ -1,8 +1,8 @@
 //! Progress on the terminal and the summary at the end of a run.
 
-use crate::engine::stage_time::{self, StageTimes};
 use crate::error::Error;
 use crate::io::sequence::format_frame_list;
+use crate::stage_time::{self, StageTimes};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
 use std::io::Write;
 use std::path::Path;

@@ -3,20 +3,12 @@
 //! source node (specs/file-format.md, "Slate").
 
 use crate::engine::graph::Op;
-use crate::engine::plan::Job;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::engine::plan::{Job, SlateFrame};
 use crate::io::burn_in::{self, attribute_text, Label};
+use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use exr::meta::header::Header;
 use std::path::Path;
-
-/// Which frame is the slate and the shot's frames it introduces.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SlateFrame {
-    pub frame: i64,
-    /// The shot's frames, as `--frames` takes them (`1001-1100`).
-    pub range: String,
-}
 
 /// Attributes a dailies slate shows when the output has them, besides the
 /// ones the user sets.

@@ -3,8 +3,10 @@
 //! (`Op::assumptions`). They are read from the first frame of each input;
 //! `commands::run_job` prints each once, unless `--quiet`.
 
-use super::graph::{box_text, Display, Node};
-use super::plan::{plan_parts, FrameSources, HeaderBase, Job, Source};
+use super::frame_plan::plan_parts;
+use super::graph::{Display, Node};
+use super::plan::{FrameSources, HeaderBase, Job, Source};
+use crate::io::header_text::box_text;
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};

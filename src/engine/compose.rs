@@ -6,8 +6,8 @@
 use super::graph::{Graph, Node, Op};
 use super::memory_bound::{spanned_rows, window_rows};
 use super::region::{rows_of, Regions};
-use super::stage_time::{self, Stage};
-use super::strip::Rows;
+use crate::io::rows::Rows;
+use crate::stage_time::{self, Stage};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use rayon::prelude::*;
 use std::ops::Range;
@@ -330,7 +330,7 @@ impl<'g> Composer<'g> {
 mod tests {
     use super::*;
     use crate::engine::graph::Op;
-    use crate::engine::strip::{RowsMut, Samples};
+    use crate::io::rows::{RowsMut, Samples};
     use exr::meta::attribute::SampleType;
     use std::sync::atomic::{AtomicUsize, Ordering};
     use std::sync::Arc;

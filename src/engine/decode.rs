@@ -5,12 +5,12 @@
 //! the block rows overlapping a strip (`tiles::Level`).
 
 use super::deep_input::DeepInput;
-use super::stage_time::{self, Stage};
-use super::strip::{Extent, Rows, Samples};
 use crate::error::Result;
 use crate::io::reader::ExrFile;
+use crate::io::rows::{Extent, Rows, Samples};
 use crate::io::subsampling;
 use crate::io::tiles::{self, Level};
+use crate::stage_time::{self, Stage};
 use exr::block::UncompressedBlock;
 use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;

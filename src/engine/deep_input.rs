@@ -7,13 +7,14 @@
 
 use super::graph::union;
 use super::plan::MAX_STRIP_BYTES;
-use super::stage_time::{self, Stage};
-use super::strip::Rows;
 use crate::error::Result;
 use crate::io::deep::{decode_deep, DeepBlock, DeepChunk};
-use crate::io::reader::{ExrFile, MAX_BLOCK_BYTES};
+use crate::io::limits::MAX_BLOCK_BYTES;
+use crate::io::reader::ExrFile;
+use crate::io::rows::Rows;
 use crate::io::text::Utf8Text;
 use crate::io::tiles::Level;
+use crate::stage_time::{self, Stage};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
 use rayon::prelude::*;

@@ -1,12 +1,12 @@
 //! Output strips to compressed chunks, one block per task, in parallel.
 
-use super::plan::output_grid;
-use super::stage_time::{self, Stage};
-use super::strip::Rows;
+use super::frame_plan::output_grid;
 use crate::error::{Error, Result};
+use crate::io::rows::Rows;
 use crate::io::text::Utf8Text;
 use crate::io::writer::IndexedChunk;
 use crate::io::{subsampling, zip};
+use crate::stage_time::{self, Stage};
 use exr::block::chunk::{
     Chunk, CompressedBlock, CompressedScanLineBlock, CompressedTileBlock, TileCoordinates,
 };

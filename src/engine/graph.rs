@@ -1,6 +1,6 @@
 //! The node graph a job runs: inputs, operations, and the node that is written.
 
-use super::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
 use std::ops::Range;
@@ -71,8 +71,11 @@ pub trait Op: Send + Sync + std::fmt::Debug {
         None
     }
 
-    /// The output's channels, given each input's channels.
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription>;
+    /// The output's channels, given each input's channels: by default the
+    /// first input's.
+    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
+        inputs[0].to_vec()
+    }
 
     /// Whether the inputs have what the op needs (a layer asked for, say):
     /// the reason when not.
@@ -142,7 +145,7 @@ pub trait Op: Send + Sync + std::fmt::Debug {
     /// for frame `frame`. Each input holds at least rows
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data
     /// window and to the rows computed (those written, grown by the graph's
-    /// reach: `plan::computed`; an op reads only the rows it holds), in the
+    /// reach: `frame_plan::computed`; an op reads only the rows it holds), in the
     /// same columns as `out`; for an op that resamples, the
     /// rows and columns `request` gave, clipped to the input's region. An op
     /// without inputs is a source.
@@ -441,18 +444,6 @@ pub fn union(a: IntegerBounds, b: IntegerBounds) -> IntegerBounds {
     let x1 = a.end().x().max(b.end().x());
     let y1 = a.end().y().max(b.end().y());
     IntegerBounds::new((x0, y0), ((x1 - x0) as usize, (y1 - y0) as usize))
-}
-
-/// `b` as exrheader prints a box: `(x0 y0) - (x1 y1)`, its last pixels.
-pub fn box_text(b: IntegerBounds) -> String {
-    let end = b.max();
-    format!(
-        "({} {}) - ({} {})",
-        b.position.x(),
-        b.position.y(),
-        end.x(),
-        end.y()
-    )
 }
 
 /// `w` moved by (dx, dy).

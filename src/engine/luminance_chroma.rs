@@ -14,7 +14,7 @@
 //! unchanged.
 
 use super::graph::{Graph, Op};
-use super::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, Chromaticities, SampleType};
@@ -250,7 +250,7 @@ struct Chroma<'a> {
     input: &'a Rows,
     weights: [f32; 3],
     /// The input's lines held inside its data window (first, last): the
-    /// window's, wherever the halo reaches them (`plan::computed`), and the
+    /// window's, wherever the halo reaches them (`frame_plan::computed`), and the
     /// strip's columns inside it.
     lines: (i32, i32),
     columns: std::ops::Range<usize>,

@@ -2,8 +2,8 @@
 //! of specs/architecture.md ("Memory bound", and "Regions of interest" for
 //! nodes that stream at another size), which a farm job asks of its workers.
 
+use super::frame_plan::FramePlan;
 use super::graph::{Graph, Node};
-use super::plan::FramePlan;
 use super::region::Regions;
 use exr::meta::attribute::IntegerBounds;
 

@@ -11,12 +11,12 @@
 //! "Blocks passed through".
 
 use super::decode::{decode_strip, InputCursor, Region};
+use super::frame_plan::{output_grid, FramePlan};
 use super::graph::{intersection, moved, Graph, Node};
-use super::plan::{output_grid, FramePlan};
-use super::stage_time::{self, Stage};
-use super::strip::Rows;
 use crate::error::Result;
+use crate::io::rows::Rows;
 use crate::io::writer::IndexedChunk;
+use crate::stage_time::{self, Stage};
 use exr::block::chunk::CompressedBlock;
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};

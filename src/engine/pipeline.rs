@@ -7,17 +7,18 @@ use super::compose::Composer;
 use super::decode::{decode_regions, InputCursor, Region};
 use super::encode::encode_rows;
 use super::fingerprint;
+use super::frame_plan::{output_grid, plan_parts, FramePlan};
 use super::interrupt;
 use super::passthrough::PassThrough;
-use super::plan::{output_grid, plan_parts, FramePlan, FrameSources, Job};
-use super::stage_time::{self, Stage, StageTimes};
-use super::strip::Rows;
+use super::plan::{FrameSources, Job};
 use crate::error::{Error, Kind, Result};
 use crate::guard;
 use crate::io::media::{self, Strip};
 use crate::io::reader::ExrFile;
+use crate::io::rows::Rows;
 use crate::io::writer::write_file;
 use crate::io::writer::IndexedChunk;
+use crate::stage_time::{self, Stage, StageTimes};
 use crossbeam_channel::{bounded, Receiver, Sender};
 use exr::meta::attribute::IntegerBounds;
 use std::ops::Range;
@@ -468,7 +469,7 @@ fn compose_stage(
 
 /// The part of composed `rows` inside the written window: a band's rows,
 /// and without the rows and columns computed around it for the halos
-/// (`plan::computed`); whole blocks, as the band is on the grid.
+/// (`frame_plan::computed`); whole blocks, as the band is on the grid.
 fn written_rows(rows: Rows, window: IntegerBounds) -> Option<Rows> {
     let (top, bottom) = (
         rows.y.max(window.position.y()),
@@ -498,7 +499,7 @@ fn encode_stage(
         let out = match msg {
             Msg::Begin(ref p) | Msg::Part(ref p) => {
                 plan = Some(p.clone());
-                label = job.media.as_ref().and_then(|review| review.label(p));
+                label = job.media.as_ref().and_then(|review| p.label(review));
                 relay(&msg, p.clone())
             }
             Msg::Strip(composed) => {

@@ -2,7 +2,8 @@
 //! halo depends on the pixels (vblur's longest vertical streak).
 
 use super::decode::{decode_all, InputCursor};
-use super::plan::{input_level, Job, Source};
+use super::frame_plan::input_level;
+use super::plan::{Job, Source};
 use crate::error::Result;
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;

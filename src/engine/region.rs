@@ -256,7 +256,7 @@ pub fn request(graph: &Graph, n: usize, out: IntegerBounds) -> IntegerBounds {
 mod tests {
     use super::*;
     use crate::engine::graph::Op;
-    use crate::engine::strip::{Rows, RowsMut};
+    use crate::io::rows::{Rows, RowsMut};
     use exr::meta::attribute::ChannelDescription;
 
     /// Mirrors rows about the middle of `0..height` (a flip) when `flip`,

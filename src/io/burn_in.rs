@@ -167,7 +167,7 @@ pub(crate) fn timecode(header: &Header) -> Option<String> {
 pub(crate) fn attribute_text(value: &AttributeValue) -> String {
     match value {
         AttributeValue::Text(text) => text.to_string(),
-        other => crate::info::value_text(other)
+        other => super::header_text::value_text(other)
             .trim_start_matches(':')
             .trim()
             .to_string(),

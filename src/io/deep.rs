@@ -2,7 +2,7 @@
 //! unpack to one count per pixel, never decreasing, and the sample data to
 //! exactly what those counts add up to), and decoding into samples.
 
-use super::reader::{check_inflation, MAX_BLOCK_BYTES};
+use super::limits::{check_inflation, MAX_BLOCK_BYTES};
 use super::zip;
 use exr::block::chunk::CompressedBlock;
 use exr::meta::attribute::{IntegerBounds, SampleType};

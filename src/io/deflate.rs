@@ -37,6 +37,12 @@
 use libdeflater::{CompressionLvl, Compressor};
 use std::cell::RefCell;
 
+/// libdeflate level 2 (for what ISA-L does not take). Measured
+/// against OpenEXR 3.5 (oiiotool 3.2, which writes what libdeflate level 4
+/// writes): grainy 4K plates +0.6%, the ScanLines and Beachball photographs
+/// -2.3% to +1.7%.
+pub const DEFAULT_LEVEL: u8 = 2;
+
 /// Above this compressed/raw ratio, the first half counts as noise.
 const NOISE_RATIO: f64 = 0.5;
 
@@ -87,7 +93,7 @@ pub fn zlib_compress(data: &[u8], level: u8, out: &mut Vec<u8>) {
         };
     let rest = if noisy { &data[half..] } else { data };
     let noisy_and_small =
-        rest.len() < data.len() && data.len() < SMALL_BLOCK && level <= super::zip::DEFAULT_LEVEL;
+        rest.len() < data.len() && data.len() < SMALL_BLOCK && level <= DEFAULT_LEVEL;
     if !(noisy_and_small && igzip_blocks(rest, true, out).is_some()) {
         libdeflate_final_blocks(rest, level, out);
     }

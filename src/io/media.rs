@@ -6,8 +6,8 @@
 //! arrive, JPEG by rows of MCUs, so memory stays flat in the frame's height.
 
 use super::burn_in::Label;
-use crate::engine::strip::Rows;
 use crate::error::{Error, Result};
+use crate::io::rows::Rows;
 use exr::meta::attribute::IntegerBounds;
 use rayon::prelude::*;
 use std::cell::RefCell;
@@ -312,6 +312,29 @@ pub fn write_frame(
         Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Exr => Err(Error::internal("an EXR frame written as review media")),
     })
+}
+
+/// An 8-bit RGB image, rows top to bottom (the demo's contact sheet, the
+/// bench chart).
+pub struct Rgb8 {
+    pub width: usize,
+    pub height: usize,
+    /// `width * height` pixels.
+    pub pixels: Vec<[u8; 3]>,
+}
+
+/// The PNG file of `image`.
+pub fn png_file(image: &Rgb8) -> Vec<u8> {
+    let mut file = Vec::new();
+    let mut encoder = png::Encoder::new(&mut file, image.width as u32, image.height as u32);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    // Only a size of 0 or over 2^31 fails, or a short write, none of which
+    // a sheet or chart (margins around whatever they hold) nor a Vec gives.
+    let mut writer = encoder.write_header().expect("a PNG header in memory");
+    (writer.write_image_data(image.pixels.as_flattened())).expect("PNG pixels in memory");
+    writer.finish().expect("a PNG in memory");
+    file
 }
 
 type Next<'a> = &'a mut dyn FnMut() -> Result<Option<Strip>>;
@@ -677,4 +700,27 @@ fn jpeg_comments(mut reader: impl std::io::Read) -> Vec<String> {
         }
     }
     comments
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_png_file_decodes_to_its_pixels() {
+        let image = Rgb8 {
+            width: 2,
+            height: 1,
+            pixels: vec![[255, 0, 0], [0, 0, 255]],
+        };
+        let file = png_file(&image);
+        let mut reader = png::Decoder::new(std::io::Cursor::new(file))
+            .read_info()
+            .unwrap();
+        let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut pixels).unwrap();
+        assert_eq!((info.width, info.height), (2, 1));
+        assert_eq!(info.color_type, png::ColorType::Rgb);
+        assert_eq!(pixels, [255, 0, 0, 0, 0, 255]);
+    }
 }

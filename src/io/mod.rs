@@ -1,14 +1,18 @@
-//! Files: frame sequences, the EXR reader and writer, review media.
+//! Files: frame sequences, the EXR reader and writer, review media, and the
+//! rows of pixels in memory they are decoded into (`rows`). Nothing here
+//! imports the engine or the front ends.
 
 pub mod attributes;
 pub mod burn_in;
 pub mod deep;
 pub mod deflate;
+pub mod header_text;
+pub mod limits;
 pub mod media;
 pub mod overwrite;
 pub mod parts;
-pub mod png;
 pub mod reader;
+pub mod rows;
 pub mod sequence;
 pub mod standard_attributes;
 pub mod stitch;

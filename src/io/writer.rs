@@ -9,8 +9,8 @@
 
 use super::overwrite::FileSet;
 use super::reader::ExrFile;
-use crate::engine::stage_time::{self, Stage};
 use crate::error::{Error, Result};
+use crate::stage_time::{self, Stage};
 use crossbeam_channel::{bounded, Receiver, Sender};
 use exr::block::chunk::Chunk;
 use exr::block::chunk::CompressedBlock;

@@ -12,12 +12,6 @@ use std::mem::MaybeUninit;
 #[cfg(target_endian = "big")]
 compile_error!("the codecs here take native-endian samples to be little-endian");
 
-/// libdeflate level 2 (for what ISA-L does not take, `deflate.rs`). Measured
-/// against OpenEXR 3.5 (oiiotool 3.2, which writes what libdeflate level 4
-/// writes): grainy 4K plates +0.6%, the ScanLines and Beachball photographs
-/// -2.3% to +1.7%.
-pub const DEFAULT_LEVEL: u8 = 2;
-
 thread_local! {
     /// Per-thread buffers for the transformed bytes and the deflate output:
     /// reused, so blocks cost no fresh zeroed pages.
@@ -364,7 +358,7 @@ mod tests {
     fn round_trips_odd_and_even_lengths() {
         for len in [1usize, 2, 3, 15, 16, 17, 31, 32, 33, 64, 100, 1001, 4099] {
             let raw: Vec<u8> = (0..len).map(|i| ((i * 7) % 13) as u8).collect();
-            match compress(&raw, DEFAULT_LEVEL) {
+            match compress(&raw, deflate::DEFAULT_LEVEL) {
                 Some(packed) => assert_eq!(decompress(&packed, len).unwrap(), raw),
                 None => assert!(len < 64, "a repetitive block of {len} bytes must shrink"),
             }
@@ -377,7 +371,7 @@ mod tests {
             let raw: Vec<u8> = (0..len).map(|i| (i * i % 251) as u8).collect();
             let random: Vec<u8> = (0..len).map(|i| ((i * 2654435761) >> 13) as u8).collect();
             for raw in [raw, random] {
-                let packed = compress(&raw, DEFAULT_LEVEL).unwrap_or_else(|| raw.clone());
+                let packed = compress(&raw, deflate::DEFAULT_LEVEL).unwrap_or_else(|| raw.clone());
                 for (from, n) in [(0, len), (0, 2), (len - 2, 2), (len / 4 * 2, len / 4 * 2)] {
                     let mut out = vec![MaybeUninit::new(0xAAu8); n];
                     unpack(&packed, len, |u| u.place(from, &mut out)).unwrap();

@@ -6,7 +6,7 @@
 use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
-use crate::engine::strip::{PlaneMut, Rows, RowsMut, Samples};
+use crate::io::rows::{PlaneMut, Rows, RowsMut, Samples};
 use crate::io::text::Utf8Text;
 use crate::params::BLUR_RADIUS;
 use exr::meta::attribute::{ChannelDescription, SampleType};

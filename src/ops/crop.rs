@@ -10,7 +10,7 @@
 
 use super::declare::{input, params, Args, Length, Operation, Value};
 use crate::engine::graph::{intersection, moved, Carried, Display, GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::OnceLock;
 
@@ -290,10 +290,6 @@ impl Op for Crop {
 
     fn request(&self, out: IntegerBounds) -> Option<IntegerBounds> {
         self.cut.then(|| moved(out, self.shift()))
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     /// The input's pixels where it has data: in place (a crop, a pad), or

@@ -7,7 +7,7 @@ use super::declare::{named, params, Operation};
 use super::layers::Selection;
 use super::merge::{Merge, MergeOp};
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::SHADOW_GAIN;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};

@@ -6,7 +6,7 @@
 use super::declare::{choice, input, params, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::params::{
     Bound, BLACKPOINT, GAMMA, GRADE_GAIN, LIFT, MULTIPLY, OFFSET, SATURATION_FACTOR, STOPS,
     WHITEPOINT,
@@ -363,10 +363,6 @@ impl<M: ColourMap> Colour<M> {
 }
 
 impl<M: ColourMap> Op for Colour<M> {
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
-    }
-
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         self.layers.check(inputs)
     }

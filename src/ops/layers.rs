@@ -1,7 +1,7 @@
 //! Which channels an operation composites: layers (`diffuse.R`), views
 //! (`left.R`) and their alphas. See specs/ops.md, "Layers and views".
 
-use crate::engine::strip::Rows;
+use crate::io::rows::Rows;
 use crate::io::text::Utf8Text;
 use exr::meta::attribute::ChannelDescription;
 

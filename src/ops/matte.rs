@@ -5,7 +5,7 @@
 
 use super::declare::{input, named, params, Operation, Value};
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::{BALANCE, CLIP, GAIN, SCREEN, SOFTNESS, THRESHOLD};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};

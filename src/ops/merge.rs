@@ -4,7 +4,7 @@
 use super::declare::{choice, input, params, Args, Operation, Value};
 use super::layers::{Layer, Selection};
 use crate::engine::graph::{intersection, union, GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Extent, Rows, RowsMut};
+use crate::io::rows::{Extent, Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::MIX;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};

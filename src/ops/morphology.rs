@@ -5,7 +5,7 @@
 use super::declare::{input, params, Args, Operation};
 use super::layers::Selection;
 use crate::engine::graph::{GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::MORPH_RADIUS;
 use exr::meta::attribute::ChannelDescription;
@@ -68,10 +68,6 @@ pub struct Morphology {
 impl Op for Morphology {
     fn halo(&self) -> usize {
         self.radius
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

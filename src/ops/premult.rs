@@ -3,7 +3,7 @@
 use super::declare::{input, Operation};
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::ChannelDescription;
 
 pub const PREMULT: Operation = Operation {
@@ -58,10 +58,6 @@ impl Premult {
 }
 
 impl Op for Premult {
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
-    }
-
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {
         self.layers.check(inputs)
     }

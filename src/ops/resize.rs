@@ -10,7 +10,7 @@
 use super::crop::copy_moved;
 use super::declare::{choice, input, params, Args, Length, Operation, Value};
 use crate::engine::graph::{Carried, Display, GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Rows, RowsMut, Samples};
+use crate::io::rows::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use std::ops::Range;

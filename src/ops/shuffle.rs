@@ -5,7 +5,7 @@
 
 use super::declare::{input, params, Operation};
 use crate::engine::graph::{Carried, Op};
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use exr::meta::attribute::{ChannelDescription, SampleType, Text};
 

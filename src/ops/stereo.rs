@@ -5,7 +5,7 @@
 
 use super::declare::{choice, input, params, Operation, Value};
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::DISPARITY;
 use exr::meta::attribute::ChannelDescription;
@@ -84,10 +84,6 @@ impl Op for Stereo {
     /// whole row is read, so a crop keeps what comes in from beyond it.
     fn across(&self) -> usize {
         usize::MAX
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

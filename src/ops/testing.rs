@@ -3,7 +3,7 @@
 //! (one node, its inputs holding every row), with no files and no process.
 
 use crate::engine::graph::Op;
-use crate::engine::strip::Rows;
+use crate::io::rows::Rows;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 
 /// A sample of a channel at absolute pixel (x, y).

@@ -15,7 +15,7 @@ use super::crop::copy_moved;
 use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::{nearest_only, Filter};
 use crate::engine::graph::{union, Carried, Display, GraphBuilder, NodeId, Op};
-use crate::engine::strip::{Rows, RowsMut, Samples};
+use crate::io::rows::{Rows, RowsMut, Samples};
 use crate::params::{Bound, CENTER, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::{Mutex, OnceLock};
@@ -392,10 +392,6 @@ impl Op for Transform {
             false => self.params.filter.reach(),
         };
         Some(covering(maps.inverse.bounds(out, Some(data)), reach))
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     /// A whole-pixel move alone: the input's samples, moved.

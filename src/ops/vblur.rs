@@ -8,7 +8,7 @@ use super::layers::Selection;
 use crate::engine::graph::Op;
 use crate::engine::plan::Job;
 use crate::engine::prepass::max_over_rows;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::{MAX_DISPLACEMENT, VBLUR_SCALE};
 use exr::meta::attribute::ChannelDescription;
@@ -140,10 +140,6 @@ impl Streak {
 impl Op for VectorBlur {
     fn halo(&self) -> usize {
         self.reach
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

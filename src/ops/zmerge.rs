@@ -4,7 +4,7 @@
 
 use super::declare::{input, params, Operation};
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use exr::meta::attribute::ChannelDescription;
 

@@ -171,7 +171,7 @@ mod tests {
     }
 
     /// RGBA (alpha 0, 0.25, 0.5, 1 by column), Z and a `diffuse` layer.
-    fn rgba() -> crate::engine::strip::Rows {
+    fn rgba() -> crate::io::rows::Rows {
         let alpha = |x: i32, _| [0.0, 0.25, 0.5, 1.0][x as usize % 4];
         let colour = |k: f32| move |x: i32, y: i32| (0.07 * (x + 2 * y) as f32 - 0.1) * k;
         image(
@@ -214,8 +214,7 @@ mod tests {
         .unwrap();
         for y in 0..3 {
             for x in 0..8 {
-                let at =
-                    |rows: &crate::engine::strip::Rows, c: &str| sample(rows, c, x, y).unwrap();
+                let at = |rows: &crate::io::rows::Rows, c: &str| sample(rows, c, x, y).unwrap();
                 let a = at(&input, "A");
                 let c = ["R", "G", "B"].map(|n| at(&input, n));
                 let mut straight = c.map(|v| if a == 0.0 { v } else { v / a });

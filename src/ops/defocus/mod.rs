@@ -12,7 +12,7 @@ pub use aperture::Aperture;
 use super::declare::{input, params, Operation};
 use super::layers::Selection;
 use crate::engine::graph::Op;
-use crate::engine::strip::{Rows, RowsMut};
+use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::{DEFOCUS_SCALE, FOCUS, MAX_RADIUS};
 use aperture::Footprints;
@@ -134,10 +134,6 @@ impl Defocus {
 impl Op for Defocus {
     fn halo(&self) -> usize {
         self.max_radius
-    }
-
-    fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
-        inputs[0].to_vec()
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

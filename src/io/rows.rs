@@ -1,7 +1,7 @@
 //! A band of whole rows of one image: one typed plane per channel.
 
-use super::stage_time::{self, Stage};
-use crate::io::text::Utf8Text;
+use super::text::Utf8Text;
+use crate::stage_time::{self, Stage};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use half::f16;
 use half::slice::HalfFloatSliceExt;
