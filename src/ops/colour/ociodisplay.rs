@@ -17,18 +17,12 @@ pub const OCIODISPLAY: Operation = Operation {
         let p = OciodisplayParams::read(args)?;
         let config = super::config(p.config.as_ref())?;
         let from = super::colour_space(&config, &p.from)?;
-        let displays = (0..config.num_displays())
-            .map(|i| config.display(i))
-            .collect();
         let display = match &p.display {
-            Some(name) => super::one_of("display", name, displays)?,
+            Some(name) => super::display(&config, name)?,
             None => config.default_display(),
         };
-        let views = (0..config.num_views(&display))
-            .map(|i| config.view(&display, i))
-            .collect();
         let view = match &p.display_view {
-            Some(name) => super::one_of("view", name, views)?,
+            Some(name) => super::one_of("view", name, super::views(&config, &display))?,
             None => config.default_view(&display),
         };
         let transform = DisplayViewTransform::new(&from, &display, &view);
