@@ -6,7 +6,8 @@ python3 opencolorio_reference.py SPEC.json: SPEC holds "grid", a file of
 little-endian float32 RGB triples, and "cases", each a transform and "out",
 the file its result on the grid is written to (float32 RGB). Kinds:
   colorconvert: config, from, to
-  display: config, from, display, view, looks (optional: the looks override)
+  display: config, from, display, view, looks (optional: the looks override),
+    inverse
   look: config, from, to, looks, inverse
   cdl: slope, offset, power, sat, inverse; or file, id, inverse
   file: file, inverse, interpolation (OCIO's name: linear, tetrahedral...)
@@ -47,7 +48,8 @@ def processor(case):
         t = ocio.LookTransform(src=case["from"], dst=case["to"], looks=case["looks"],
                                direction=direction(case))
         return config.getProcessor(t)
-    t = ocio.DisplayViewTransform(src=case["from"], display=case["display"], view=case["view"])
+    t = ocio.DisplayViewTransform(src=case["from"], display=case["display"], view=case["view"],
+                                  direction=direction(case))
     if "looks" not in case:
         return config.getProcessor(t)
     pipeline = ocio.LegacyViewingPipeline()

@@ -278,6 +278,8 @@ mod tests {
         }
     }
 
+    const GAMUT_LOOK: &str = "ACES 1.3 Reference Gamut Compression";
+
     /// RGBA (alpha 0, 0.25, 0.5, 1 by column), Z and a `diffuse` layer.
     fn rgba() -> crate::engine::strip::Rows {
         let alpha = |x: i32, _| [0.0, 0.25, 0.5, 1.0][x as usize % 4];
@@ -543,6 +545,11 @@ mod tests {
             message.contains("(views: ACES 2.0 - SDR 100 nits (Rec.709), Un-tone-mapped"),
             "{message}"
         );
+        let message = error(
+            &ociodisplay::OCIODISPLAY,
+            &[v4, ("looks", GAMUT_LOOK), ("inverse", "true")],
+        );
+        assert!(message.contains("not --looks"), "{message}");
         let message = error(&ociolook::OCIOLOOK, &[v4, ("look", "grade")]);
         assert!(
             message.starts_with("no look 'grade' (looks: ACES 1.3 Reference Gamut Compression)"),
