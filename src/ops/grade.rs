@@ -11,7 +11,7 @@ use crate::params::{
     Bound, BLACKPOINT, GAMMA, GRADE_GAIN, LIFT, MULTIPLY, OFFSET, SATURATION_FACTOR, STOPS,
     WHITEPOINT,
 };
-use exr::meta::attribute::ChannelDescription;
+use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 
 const INPUT: &[super::declare::Input] =
     &[input("input", "Input file or sequence, `:PART` for a part")];
@@ -175,6 +175,16 @@ impl Value for Luminance {
 /// A change of each pixel's colour alone: R, G and B of a run of pixels.
 pub trait ColourMap: Send + Sync + std::fmt::Debug + 'static {
     fn apply(&self, rgb: &mut [Vec<f32>; 3]);
+    /// Divided by alpha, colour where alpha is 0 is kept as it was rather
+    /// than multiplied by 0 (OCIO's maps: an overflow to Inf times 0 would
+    /// be NaN; specs/ops.md, "Colour (OpenColorIO)").
+    fn keeps_clear(&self) -> bool {
+        false
+    }
+    /// Warnings the map owes the run (printed once, unless `--quiet`).
+    fn warnings(&self) -> Vec<String> {
+        Vec::new()
+    }
 }
 
 /// Nuke's Grade per channel: the ramp `x A + B`, the clamps, the gamma
@@ -344,7 +354,8 @@ impl ColourMap for Saturation {
 /// The node: a colour map over each selected layer's R, G, B (a missing one
 /// reads as 0 and is not written) inside the data window; with `unpremult`,
 /// on colour divided by alpha (where it is not 0), multiplied by it after
-/// (so 0 where alpha is 0), as `unpremult`, the map and `premult` in turn.
+/// (so 0 where alpha is 0, or as it was for a map that `keeps_clear`), as
+/// `unpremult`, the map and `premult` in turn.
 #[derive(Debug)]
 pub struct Colour<M> {
     map: M,
@@ -367,6 +378,15 @@ impl<M: ColourMap> Op for Colour<M> {
         self.layers.check(inputs)
     }
 
+    fn assumptions(
+        &self,
+        _names: &[String],
+        _inputs: &[&[ChannelDescription]],
+        _windows: &[IntegerBounds],
+    ) -> Vec<String> {
+        self.map.warnings()
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let input = inputs[0];
         let layers = self.layers.resolve(&[input.channels.as_slice()]);
@@ -383,6 +403,8 @@ impl<M: ColourMap> Op for Colour<M> {
             .collect();
         let columns = out.valid_columns();
         let mut rgb: [Vec<f32>; 3] = Default::default();
+        let keep = self.unpremult && self.map.keeps_clear();
+        let mut before: [Vec<f32>; 3] = Default::default();
         let mut alpha = vec![0.0f32; columns.len()];
         for y in out.valid_rows() {
             let (to, from) = (out.row_range(y), input.row_range(y));
@@ -412,9 +434,16 @@ impl<M: ColourMap> Op for Colour<M> {
                         }
                     }
                 }
+                if keep {
+                    before.clone_from(&rgb);
+                }
                 self.map.apply(&mut rgb);
-                for (values, c) in rgb.iter_mut().zip(found) {
-                    if self.unpremult {
+                for ((values, c), kept) in rgb.iter_mut().zip(found).zip(&before) {
+                    if keep {
+                        for ((v, &a), &was) in values.iter_mut().zip(&alpha).zip(kept) {
+                            *v = if a != 0.0 { *v * a } else { was };
+                        }
+                    } else if self.unpremult {
                         values.iter_mut().zip(&alpha).for_each(|(v, &a)| *v *= a);
                     }
                     if let Some(c) = c {

@@ -6,11 +6,14 @@ python3 opencolorio_reference.py SPEC.json: SPEC holds "grid", a file of
 little-endian float32 RGB triples, and "cases", each a transform and "out",
 the file its result on the grid is written to (float32 RGB). Kinds:
   colorconvert: config, from, to
-  display: config, from, display, view, looks (optional: the looks override)
+  display: config, from, display, view, looks (optional: the looks override),
+    inverse
   look: config, from, to, looks, inverse
   cdl: slope, offset, power, sat, inverse; or file, id, inverse
   file: file, inverse, interpolation (OCIO's name: linear, tetrahedral...)
-Processors are OCIO's default CPU processors, as exrcomp's are."""
+Processors are OCIO's default CPU processors, as exrcomp's are. A case with
+"may_refuse" that OCIO refuses writes OCIO's message to "out" + ".refused"
+instead (the sweep of OCIO's own test files)."""
 import json
 import sys
 
@@ -45,7 +48,8 @@ def processor(case):
         t = ocio.LookTransform(src=case["from"], dst=case["to"], looks=case["looks"],
                                direction=direction(case))
         return config.getProcessor(t)
-    t = ocio.DisplayViewTransform(src=case["from"], display=case["display"], view=case["view"])
+    t = ocio.DisplayViewTransform(src=case["from"], display=case["display"], view=case["view"],
+                                  direction=direction(case))
     if "looks" not in case:
         return config.getProcessor(t)
     pipeline = ocio.LegacyViewingPipeline()
@@ -61,7 +65,15 @@ def main():
     grid = np.fromfile(spec["grid"], dtype="<f4")
     for case in spec["cases"]:
         values = grid.astype(np.float32).copy()
-        processor(case).getDefaultCPUProcessor().applyRGB(values)
+        try:
+            cpu = processor(case).getDefaultCPUProcessor()
+        except Exception as e:
+            if not case.get("may_refuse"):
+                raise
+            with open(case["out"] + ".refused", "w") as f:
+                f.write(str(e))
+            continue
+        cpu.applyRGB(values)
         values.astype("<f4").tofile(case["out"])
 
 

@@ -15,6 +15,10 @@ use std::process::Command;
 const V4: &str = "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5";
 const V1: &str = "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1";
 const GAMUT: &str = "ACES 1.3 Reference Gamut Compression";
+/// ACES 2.1 (PyPI's opencolorio 2.6 builds these in; the crate does not).
+const V5: &str = "ocio://cg-config-v5.0.0_aces-v2.1_ocio-v2.6";
+const STUDIO5: &str = "ocio://studio-config-v5.0.0_aces-v2.1_ocio-v2.6";
+const STUDIO4: &str = "ocio://studio-config-v4.0.0_aces-v2.0_ocio-v2.5";
 
 /// specs/colour-library.md's grid: 14 values per channel, every
 /// combination (2744 pixels, as a 56 x 49 image).
@@ -270,6 +274,86 @@ fn cases(dir: &Path) -> Vec<Case> {
                    "to": "Linear Rec.709 (sRGB)"}),
         ),
         case(
+            "studio_v4_named_transform_to_acescg",
+            &[
+                "colorconvert",
+                "--config",
+                STUDIO4,
+                "--from",
+                "ARRI LogC4 - Curve",
+                "--to",
+                "ACEScg",
+            ],
+            json!({"kind": "colorconvert", "config": STUDIO4, "from": "ARRI LogC4 - Curve",
+                   "to": "ACEScg"}),
+        ),
+        case(
+            "studio_v4_named_transform_to_named_transform",
+            &[
+                "colorconvert",
+                "--config",
+                STUDIO4,
+                "--from",
+                "S-Log3 - Curve",
+                "--to",
+                "ARRI LogC4 - Curve",
+            ],
+            json!({"kind": "colorconvert", "config": STUDIO4, "from": "S-Log3 - Curve",
+                   "to": "ARRI LogC4 - Curve"}),
+        ),
+        case(
+            "studio_v5_acescg_to_named_transform",
+            &[
+                "colorconvert",
+                "--config",
+                STUDIO5,
+                "--from",
+                "ACEScg",
+                "--to",
+                "V-Log - Curve",
+            ],
+            json!({"kind": "colorconvert", "config": STUDIO5, "from": "ACEScg",
+                   "to": "V-Log - Curve"}),
+        ),
+        case(
+            "v5_display_alias",
+            &[
+                "ociodisplay",
+                "--config",
+                V5,
+                "--display",
+                "P3-D65 - Display",
+                "--display-view",
+                "ACES 2.0 - SDR 100 nits (P3 D65)",
+            ],
+            json!({"kind": "display", "config": V5, "from": "ACEScg",
+                   "display": "P3-D65 - Display", "view": "ACES 2.0 - SDR 100 nits (P3 D65)"}),
+        ),
+        case(
+            "v5_display_defaults",
+            &["ociodisplay", "--config", V5],
+            json!({"kind": "display", "config": V5, "from": "ACEScg",
+                   "display": "sRGB - Display", "view": sdr}),
+        ),
+        case(
+            "v4_display_inverse_from_acescct",
+            &[
+                "ociodisplay",
+                "--config",
+                V4,
+                "--from",
+                "ACEScct",
+                "--display",
+                "Rec.1886 Rec.709 - Display",
+                "--display-view",
+                "Video (colorimetric)",
+                "--inverse",
+            ],
+            json!({"kind": "display", "config": V4, "from": "ACEScct",
+                   "display": "Rec.1886 Rec.709 - Display", "view": "Video (colorimetric)",
+                   "inverse": true}),
+        ),
+        case(
             "v4_display_defaults",
             &["ociodisplay", "--config", V4],
             json!({"kind": "display", "config": V4, "from": "ACEScg",
@@ -425,6 +509,19 @@ fn reference(
     pixels: &[[f32; 3]],
     cases: &[Case],
 ) -> Vec<Vec<f32>> {
+    let results = reference_or_refusal(python, dir, tag, pixels, cases);
+    results.into_iter().map(Result::unwrap).collect()
+}
+
+/// `reference`, with OCIO's message where it refuses a case that may be
+/// refused (`"may_refuse": true`).
+fn reference_or_refusal(
+    python: &str,
+    dir: &Path,
+    tag: &str,
+    pixels: &[[f32; 3]],
+    cases: &[Case],
+) -> Vec<Result<Vec<f32>, String>> {
     let grid = dir.join(format!("grid_{tag}.raw"));
     std::fs::write(&grid, raw(pixels.iter().flatten().copied())).unwrap();
     let outs: Vec<PathBuf> = cases
@@ -444,7 +541,12 @@ fn reference(
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/peers/opencolorio_reference.py");
     succeed(Command::new(python).arg(script).arg(&spec_path));
     outs.iter()
-        .map(|o| unraw(&std::fs::read(o).unwrap()))
+        .map(
+            |o| match std::fs::read_to_string(format!("{}.refused", s(o))) {
+                Ok(refusal) => Err(refusal),
+                Err(_) => Ok(unraw(&std::fs::read(o).unwrap())),
+            },
+        )
         .collect()
 }
 
@@ -522,6 +624,8 @@ fn every_command_matches_pypi_opencolorio_in_float_and_half() {
             args.extend(c.args[1..].iter().map(String::as_str));
             let result = run(&args);
             assert!(result.status.success(), "{args:?}: {}", stderr(&result));
+            // ACES 2.1's use_display_aliases is read, not warned about.
+            assert!(stderr(&result).is_empty(), "{args:?}: {}", stderr(&result));
             let ours = read_image(&out);
             let worst = compare(c.name, &rgb(&ours), reference, half);
             let unit = ["relative", "half steps"][half as usize];
@@ -611,12 +715,19 @@ fn alpha_layers_job_nodes_and_the_ocio_variable() {
     for i in 0..23 * 11 {
         let a = img.channels["A"].get_f32(i);
         for (k, c) in ["R", "G", "B"].into_iter().enumerate() {
-            // Unpremultiplied, converted, premultiplied: 0 where alpha is 0.
-            let want = refs[0][3 * i + k] * a;
+            // Unpremultiplied, converted, premultiplied; where alpha is 0
+            // kept as it was (0, premultiplied).
+            let want = match a {
+                0.0 => img.channels[c].get_f32(i),
+                _ => refs[0][3 * i + k] * a,
+            };
             assert_close(c, ours.channels[c].get_f32(i), want);
             assert_close(c, as_is.channels[c].get_f32(i), plain[0][3 * i + k]);
             let name = format!("diffuse.{c}");
-            let want = f16::from_f32(diffuse[0][3 * i + k] * a).to_f32();
+            let want = match a {
+                0.0 => img.channels[&name].get_f32(i),
+                _ => f16::from_f32(diffuse[0][3 * i + k] * a).to_f32(),
+            };
             let got = layer.channels[&name].get_f32(i);
             assert!(
                 (got - want).abs() <= 1e-3 * want.abs().max(1e-3),
@@ -878,4 +989,250 @@ fn oiiotool_agrees_where_its_opencolorio_2_1_does() {
         eprintln!("{name}: oiiotool 2.4 (OCIO 2.1.2) differs by {worst:.2e} relative");
         assert!(worst <= tolerance, "{name}: {worst} over {tolerance}");
     }
+}
+
+/// The sweep's values per channel: the grid's range with the extremes a
+/// file can hold (half's largest, infinities), every combination.
+const SWEEP: [f32; 17] = [
+    f32::NEG_INFINITY,
+    -65504.0,
+    -1.0,
+    -0.1,
+    0.0,
+    0.002,
+    0.02,
+    0.18,
+    0.5,
+    1.0,
+    1.5,
+    4.0,
+    16.0,
+    65.0,
+    1000.0,
+    65504.0,
+    f32::INFINITY,
+];
+
+/// Equal (infinities of the same sign), both NaN, or within 1e-5 relative
+/// or 2e-6 absolute.
+fn matches(got: f32, want: f32) -> bool {
+    let error = (f64::from(got) - f64::from(want)).abs();
+    got == want
+        || got.is_nan() && want.is_nan()
+        || got.is_finite()
+            && want.is_finite()
+            && error <= 2e-6_f64.max(1e-5 * f64::from(want.abs()))
+}
+
+/// OpenColorIO's own test files (../shared/ocio-test-files: its LUTs,
+/// transforms and CDLs, some malformed on purpose), each through
+/// `filetransform`, forward and `--inverse`, against PyPI's opencolorio
+/// 2.6 on every combination of `SWEEP`: the same files load and are
+/// refused, and every loaded case matches (infinities with OCIO's sign).
+#[test]
+fn every_ocio_test_file_loads_or_is_refused_and_computes_as_pypi_does() {
+    let Some(files) = ocio_test_files() else {
+        return;
+    };
+    let Some(python) = python() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mut pixels = Vec::new();
+    for r in SWEEP {
+        for g in SWEEP {
+            for b in SWEEP {
+                pixels.push([r, g, b]);
+            }
+        }
+    }
+    let (width, height) = (SWEEP.len() * SWEEP.len(), SWEEP.len());
+    let mut channels = std::collections::BTreeMap::new();
+    for (c, name) in ["R", "G", "B"].iter().enumerate() {
+        let values = pixels.iter().map(|p| p[c]).collect();
+        channels.insert(name.to_string(), Samples::F32(values));
+    }
+    let img = Img {
+        x: 0,
+        y: 0,
+        width,
+        height,
+        display: (width, height),
+        channels,
+    };
+    let input = d.join("sweep.exr");
+    write_image(&input, &img, Compression::ZIP16, LineOrder::Increasing);
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&files)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_file())
+        .filter(|p| !["LICENSE", "README.md"].iter().any(|n| p.ends_with(n)))
+        .collect();
+    names.sort();
+    let mut cases = Vec::new();
+    for (k, file) in names.iter().enumerate() {
+        for inverse in [false, true] {
+            let name: &'static str = Box::leak(format!("sweep{k}_{inverse}").into_boxed_str());
+            let mut args = vec!["filetransform", "--file", s(file)];
+            args.extend(inverse.then_some("--inverse"));
+            let peer = json!({"kind": "file", "file": s(file), "inverse": inverse,
+                              "may_refuse": true});
+            cases.push(case(name, &args, peer));
+        }
+    }
+    let references = reference_or_refusal(&python, d, "sweep", &pixels, &cases);
+    let (mut loaded, mut refused, mut wrong) = (0, 0, Vec::new());
+    for (c, reference) in cases.iter().zip(&references) {
+        let out = d.join(format!("{}.exr", c.name));
+        let mut args = vec![c.args[0].as_str(), s(&input), "-o", s(&out), "--quiet"];
+        args.extend(c.args[1..].iter().map(String::as_str));
+        let result = run(&args);
+        let what = c.args[2..].join(" ");
+        match (reference, result.status.success()) {
+            (Err(_), false) => refused += 1,
+            (Err(ocio), true) => wrong.push(format!("{what}: loads; OCIO refuses: {ocio}")),
+            (Ok(_), false) => wrong.push(format!("{what}: refused: {}", stderr(&result))),
+            (Ok(want), true) => {
+                loaded += 1;
+                let ours = rgb(&read_image(&out));
+                let bad: Vec<usize> = (0..want.len())
+                    .filter(|&i| !matches(ours[i / 3][i % 3], want[i]))
+                    .collect();
+                if let Some(&i) = bad.first() {
+                    wrong.push(format!(
+                        "{what}: {} samples differ, first of pixel {:?}: {} where OCIO gives {}",
+                        bad.len(),
+                        pixels[i / 3],
+                        ours[i / 3][i % 3],
+                        want[i]
+                    ));
+                }
+            }
+        }
+    }
+    eprintln!(
+        "{} files: {loaded} cases loaded by both, {refused} refused by both",
+        names.len()
+    );
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert!(
+        loaded > 100 && refused > 10,
+        "{loaded} loaded, {refused} refused"
+    );
+}
+
+/// A display or view that is not active (`active_displays` and
+/// `active_views` of the config, `$OCIO_ACTIVE_DISPLAYS` and
+/// `$OCIO_ACTIVE_VIEWS`) is built when named, as OCIO and oiiotool build
+/// it: the same pixels as with every display active.
+#[test]
+fn inactive_displays_and_views_are_built_when_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("grid.exr");
+    write_image(
+        &input,
+        &grid_image(&Kind::Float),
+        Compression::ZIP16,
+        LineOrder::Increasing,
+    );
+    let builtin = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("vendor/ocio/src/builtins/configs/cg-config-v4.0.0_aces-v2.0_ocio-v2.5.ocio");
+    let text: String = std::fs::read_to_string(builtin)
+        .unwrap()
+        .lines()
+        .map(|line| match line {
+            l if l.starts_with("active_displays:") => "active_displays: [sRGB - Display]",
+            l if l.starts_with("active_views:") => "active_views: [Raw]",
+            l => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let narrow = d.join("narrow.ocio");
+    std::fs::write(&narrow, text).unwrap();
+    let (display, view) = (
+        "Rec.1886 Rec.709 - Display",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+    );
+    let command = |out: &str, config: &Path, env: &[(&str, &str)]| {
+        let out = d.join(out);
+        let mut call = exrcomp();
+        call.args(["ociodisplay", s(&input), "-o", s(&out), "-q", "--config"]);
+        call.args([s(config), "--display", display, "--display-view", view]);
+        call.envs(env.iter().copied());
+        succeed(&mut call);
+        read_image(&out)
+    };
+    let all = command("all.exr", Path::new(V4), &[]);
+    assert_identical(&command("narrow.exr", &narrow, &[]), &all);
+    let env = [
+        ("OCIO_ACTIVE_DISPLAYS", "sRGB - Display"),
+        ("OCIO_ACTIVE_VIEWS", "Raw"),
+    ];
+    assert_identical(&command("env.exr", Path::new(V4), &env), &all);
+    // A name that is nowhere is still refused, listing the active first.
+    let out = run(&[
+        "ociodisplay",
+        s(&input),
+        "-o",
+        s(&d.join("x.exr")),
+        "--config",
+        s(&narrow),
+        "--display",
+        "Rec.1886 Rec.709 - Dislpay",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let message = stderr(&out);
+    assert!(message.contains("(displays: sRGB - Display, "), "{message}");
+    assert!(
+        message.contains("did you mean 'Rec.1886 Rec.709 - Display'"),
+        "{message}"
+    );
+}
+
+/// An interpolation no LUT of the file takes (cubic on a 3D LUT,
+/// tetrahedral on a 1D one) is OCIO's warning, once per run however many
+/// frames, and the format's interpolation; one it takes says nothing.
+#[test]
+fn an_interpolation_a_lut_cannot_take_warns_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_luts(d);
+    write_sequence(d, "plate", 1..=3, 7);
+    let pattern = d.join("plate.####.exr");
+    let command = |file: &str, interpolation: &str, out: &str| {
+        let out = d.join(out);
+        let lut = d.join(file);
+        let result = run(&[
+            "filetransform",
+            s(&pattern),
+            "-o",
+            s(&out),
+            "--file",
+            s(&lut),
+            "--interpolation",
+            interpolation,
+        ]);
+        assert!(result.status.success(), "{}", stderr(&result));
+        let warnings: Vec<String> = stderr(&result)
+            .lines()
+            .filter(|l| l.contains("warning"))
+            .map(str::to_string)
+            .collect();
+        (warnings, out)
+    };
+    for (file, interpolation) in [("test.spi3d", "cubic"), ("test.spi1d", "tetrahedral")] {
+        let (warnings, out) = command(file, interpolation, &format!("{file}.####.exr"));
+        assert_eq!(warnings.len(), 1, "{file}: {warnings:?}");
+        let says = format!("'{interpolation}' is not allowed with the given file");
+        assert!(warnings[0].contains(&says), "{}", warnings[0]);
+        // The format's own interpolation, as with none asked for.
+        let (none, default) = command(file, "default", &format!("{file}_default.####.exr"));
+        assert!(none.is_empty(), "{none:?}");
+        for frame in 1..=3 {
+            let name = |p: &Path| PathBuf::from(s(p).replace("####", &format!("{frame:04}")));
+            assert_identical(&read_image(&name(&out)), &read_image(&name(&default)));
+        }
+    }
+    let (warnings, _) = command("test.spi3d", "tetrahedral", "tetra.####.exr");
+    assert!(warnings.is_empty(), "{warnings:?}");
 }

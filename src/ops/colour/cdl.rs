@@ -7,7 +7,7 @@ use super::super::grade::Rgb;
 use super::colorconvert::COLORCONVERT;
 use super::filetransform::{file, read};
 use crate::params::{CDL_POWER, CDL_SLOPE, OFFSET, SATURATION_FACTOR};
-use ocio::{CdlTransform, FileTransform, Transform};
+use ocio::{CdlTransform, FileTransform, Processor, Transform, TransformDirection};
 
 pub const CDL: Operation = Operation {
     name: "cdl",
@@ -76,4 +76,34 @@ params! {
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }
+}
+
+/// Refuses the inverse of a CDL that has none, as OCIO does ("Singular
+/// Matrix can't be inverted."): a slope or the saturation of 0 maps many
+/// colours to one. Any CDL of the processor (given, read from a file, or
+/// in a look) is checked; the `ocio` crate would write values.
+pub fn invertible(processor: &Processor) -> Result<(), String> {
+    for op in processor.ops() {
+        let Some(Transform::Cdl(cdl)) = op.to_transform() else {
+            continue;
+        };
+        if cdl.direction != TransformDirection::Inverse {
+            continue;
+        }
+        let zero = match (cdl.slope.contains(&0.0), cdl.sat == 0.0) {
+            (true, _) => "a slope of 0",
+            (false, true) => "a saturation of 0",
+            (false, false) => continue,
+        };
+        let given = match zero {
+            "a slope of 0" => "--slope",
+            _ => "--saturation",
+        };
+        return Err(format!(
+            "the CDL has {zero} ({given}), which has no inverse (OpenColorIO: \
+             Singular Matrix can't be inverted); --inverse needs every slope and \
+             the saturation above 0"
+        ));
+    }
+    Ok(())
 }

@@ -2,7 +2,6 @@
 //! ColorSpaceTransform; oiiotool's `--colorconvert`, Nuke's OCIOColorSpace).
 
 use super::super::declare::{input, params, FileName, Operation};
-use ocio::{ColorSpaceTransform, Transform};
 
 pub const COLORCONVERT: Operation = Operation {
     name: "colorconvert",
@@ -17,11 +16,7 @@ pub const COLORCONVERT: Operation = Operation {
     build: |args, graph, inputs| {
         let p = ColorconvertParams::read(args)?;
         let config = super::config(p.config.as_ref())?;
-        let (from, to) = (
-            super::colour_space(&config, &p.from)?,
-            super::colour_space(&config, &p.to)?,
-        );
-        let transform = Transform::ColorSpace(ColorSpaceTransform::new(&from, &to));
+        let transform = super::conversion(&config, &p.from, &p.to)?;
         let processor = super::processor(&config, transform)?;
         Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
     },
@@ -30,9 +25,10 @@ pub const COLORCONVERT: Operation = Operation {
 
 params! {
     pub struct ColorconvertParams {
-        /// The input's colour space (a name, alias or role of the config).
+        /// The input's colour space (a name, alias or role of the config),
+        /// or a named transform of the config (its forward transform).
         from: String,
-        /// The output's colour space.
+        /// The output's colour space, or a named transform (its inverse).
         to: String,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.

@@ -16,7 +16,17 @@ pub const FILETRANSFORM: Operation = Operation {
         transform.direction = super::direction(p.inverse);
         transform.interpolation = p.interpolation.0;
         let processor = read(Transform::File(transform), &p.file)?;
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let warnings = interpolation_unused(&processor, p.interpolation.0, &p.file)
+            .into_iter()
+            .collect();
+        Ok(super::add_warned(
+            processor,
+            warnings,
+            p.no_unpremult,
+            args,
+            graph,
+            inputs,
+        ))
     },
     ..COLORCONVERT
 };
@@ -63,15 +73,58 @@ pub fn read(transform: Transform, file: &FileName) -> Result<ocio::Processor, St
         .map_err(|e| format!("cannot apply '{}': {e}", file.0))
 }
 
+/// OCIO's warning when no LUT of the file can take the interpolation asked
+/// for (cubic on a 3D LUT, or on a 1D one: OCIO's 1D LUTs take nearest and
+/// linear; tetrahedral on 1D LUTs only), which then interpolates as the
+/// format does. None for a file without LUTs, as OCIO.
+pub fn interpolation_unused(
+    processor: &ocio::Processor,
+    interpolation: Interpolation,
+    file: &FileName,
+) -> Option<String> {
+    use Interpolation::*;
+    let (mut luts, mut used) = (false, false);
+    for op in processor.ops() {
+        let three = match op.to_transform() {
+            Some(Transform::Lut1D(_)) => false,
+            Some(Transform::Lut3D(_)) => true,
+            _ => continue,
+        };
+        luts = true;
+        used |= matches!(interpolation, Best | Default | Linear | Nearest)
+            || three && interpolation == Tetrahedral;
+    }
+    let name = Interp(interpolation).name();
+    (luts && !used).then(|| {
+        format!(
+            "--interpolation {name} is not allowed with '{}' (OpenColorIO: \
+             Interpolation specified by FileTransform '{name}' is not allowed with \
+             the given file); its LUTs interpolate as the format does",
+            file.0
+        )
+    })
+}
+
 /// OCIO's LUT interpolation, by name.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interp(pub Interpolation);
 
+impl Interp {
+    const VALUES: [Interpolation; 6] = {
+        use Interpolation::*;
+        [Default, Nearest, Linear, Tetrahedral, Cubic, Best]
+    };
+
+    /// Its name, as `--interpolation` takes it.
+    fn name(self) -> &'static str {
+        let at = Self::VALUES.iter().position(|v| *v == self.0);
+        at.map_or("unknown", |i| Self::CHOICES[i])
+    }
+}
+
 impl Value for Interp {
     fn parse(text: &str) -> Result<Self, String> {
-        use Interpolation::*;
-        let values = [Default, Nearest, Linear, Tetrahedral, Cubic, Best];
-        choice(text, Self::CHOICES, &values, "interpolation").map(Interp)
+        choice(text, Self::CHOICES, &Self::VALUES, "interpolation").map(Interp)
     }
     const CHOICES: &'static [&'static str] = &[
         "default",

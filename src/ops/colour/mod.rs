@@ -16,7 +16,11 @@ use super::declare::{Args, FileName};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
 use crate::io::parts::unknown;
-use ocio::{Config, CpuProcessor, Processor, Transform, TransformDirection};
+use ocio::config::NamedTransform;
+use ocio::{
+    ColorSpaceTransform, Config, CpuProcessor, GroupTransform, Processor, Transform,
+    TransformDirection, ViewType,
+};
 
 /// The config without `--config` or `$OCIO`: OCIO's ACES CG config as the
 /// crate embeds it (v4.0.0, ACES 2.0; PyPI's 2.6 names v5.0.0 so).
@@ -56,6 +60,83 @@ pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
     Err(unknown("colour space", name, &spaces.join(", "), &known))
 }
 
+/// `--from` to `--to` as OCIO's `getProcessor(src, dst)` takes them: colour
+/// spaces (names, aliases, roles) or named transforms of the config. A
+/// named source applies its forward transform and a named destination its
+/// inverse; a colour space beside a named transform adds nothing, and the
+/// same name twice changes nothing (measured with PyPI's opencolorio 2.6).
+pub fn conversion(config: &Config, from: &str, to: &str) -> Result<Transform, String> {
+    let named = |name: &str| match config.get_color_space(name) {
+        Some(_) => None,
+        None => config.get_named_transform(name),
+    };
+    let (src, dst) = (named(from), named(to));
+    if src.is_none() && dst.is_none() {
+        let (from, to) = (colour_space(config, from)?, colour_space(config, to)?);
+        return Ok(Transform::ColorSpace(ColorSpaceTransform::new(&from, &to)));
+    }
+    for (name, nt) in [(from, src), (to, dst)] {
+        if nt.is_none() {
+            colour_space(config, name)?;
+        }
+    }
+    let mut group = GroupTransform::default();
+    if src.map(NamedTransform::name) != dst.map(NamedTransform::name) {
+        for (nt, dir) in [(src, false), (dst, true)] {
+            if let Some(nt) = nt {
+                let t = NamedTransform::get_transform(nt, direction(dir));
+                group.transforms.push(t.map_err(|e| e.to_string())?);
+            }
+        }
+    }
+    Ok(Transform::Group(group))
+}
+
+/// The config's displays, the active ones first (in the order
+/// `active_displays` or `$OCIO_ACTIVE_DISPLAYS` gives), then the others:
+/// OCIO builds an inactive display when it is named.
+pub fn displays(config: &Config) -> Vec<String> {
+    let mut names: Vec<String> = (0..config.num_displays())
+        .map(|i| config.display(i))
+        .collect();
+    for i in 0..config.num_displays_all() {
+        let name = config.display_all(i);
+        if !names.iter().any(|n| n == name) {
+            names.push(name.to_string());
+        }
+    }
+    names
+}
+
+/// A display by name, or by an alias of the display colour space of a
+/// display's name (OCIO 2.6's display aliases: `P3-D65 - Display` is
+/// `Gamma 2.6 P3-D65 - Display` in the ACES 2.1 configs).
+pub fn display(config: &Config, name: &str) -> Result<String, String> {
+    let names = displays(config);
+    let aliased = config.get_color_space(name).map(|cs| cs.name().to_string());
+    match aliased.filter(|cs| names.iter().any(|n| n == cs)) {
+        Some(display) if !names.iter().any(|n| n.eq_ignore_ascii_case(name)) => Ok(display),
+        _ => one_of("display", name, names),
+    }
+}
+
+/// A display's views, the active ones first, then the others (inactive
+/// views are built when named, as OCIO does).
+pub fn views(config: &Config, display: &str) -> Vec<String> {
+    let mut names: Vec<String> = (0..config.num_views(display))
+        .map(|i| config.view(display, i))
+        .collect();
+    for kind in [ViewType::DisplayDefined, ViewType::Shared] {
+        for i in 0..config.num_views_by_type(kind, display) {
+            let name = config.view_by_type(kind, display, i);
+            if !names.iter().any(|n| n == name) {
+                names.push(name.to_string());
+            }
+        }
+    }
+    names
+}
+
 /// `name` among `names` (OCIO compares display, view and look names
 /// without case), as `names` spells it; else an error listing them.
 pub fn one_of(what: &str, name: &str, names: Vec<String>) -> Result<String, String> {
@@ -92,14 +173,17 @@ pub fn direction(inverse: bool) -> TransformDirection {
 
 /// A transform's processor in a config (a raw one for files and CDLs).
 pub fn processor(config: &Config, transform: Transform) -> Result<Processor, String> {
-    config
+    let processor = config
         .get_processor_for_transform(&transform, TransformDirection::Forward)
-        .map_err(|e| e.to_string())
+        .map_err(|e| e.to_string())?;
+    cdl::invertible(&processor)?;
+    Ok(processor)
 }
 
 /// An OCIO CPU processor as a colour map: built once per command, shared by
-/// every band of the node (the engine runs them on the pool at once).
-pub struct Ocio(CpuProcessor, String);
+/// every band of the node (the engine runs them on the pool at once), with
+/// the warnings its building owes the run.
+pub struct Ocio(CpuProcessor, String, Vec<String>);
 
 /// A processor's maths, as its cache id (a hash of its ops and their
 /// values): what a frame's fingerprint records, so that a config with the
@@ -111,6 +195,14 @@ impl std::fmt::Debug for Ocio {
 }
 
 impl ColourMap for Ocio {
+    fn keeps_clear(&self) -> bool {
+        true
+    }
+
+    fn warnings(&self) -> Vec<String> {
+        self.2.clone()
+    }
+
     fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
         // OCIO's pixels are packed RGBA: alpha 1, as PyPI's applyRGB has it
         // (the node's alpha, if any, passes untouched).
@@ -132,7 +224,23 @@ pub fn add(
     graph: &mut GraphBuilder,
     inputs: &[NodeId],
 ) -> NodeId {
-    let map = Ocio(processor.default_cpu_processor(), processor.cache_id());
+    add_warned(processor, Vec::new(), no_unpremult, args, graph, inputs)
+}
+
+/// `add`, with warnings for the run to print once.
+pub fn add_warned(
+    processor: Processor,
+    warnings: Vec<String>,
+    no_unpremult: bool,
+    args: &Args,
+    graph: &mut GraphBuilder,
+    inputs: &[NodeId],
+) -> NodeId {
+    let map = Ocio(
+        processor.default_cpu_processor(),
+        processor.cache_id(),
+        warnings,
+    );
     graph.add(Colour::new(map, !no_unpremult, &args.layers), inputs)
 }
 
@@ -169,6 +277,8 @@ mod tests {
             _ => panic!("{} adds a node", op.name),
         }
     }
+
+    const GAMUT_LOOK: &str = "ACES 1.3 Reference Gamut Compression";
 
     /// RGBA (alpha 0, 0.25, 0.5, 1 by column), Z and a `diffuse` layer.
     fn rgba() -> crate::io::rows::Rows {
@@ -222,8 +332,9 @@ mod tests {
                 let mut plain = c;
                 cpu.apply_rgb(&mut plain);
                 for (k, n) in ["R", "G", "B"].into_iter().enumerate() {
-                    // Alpha 0: 0, as premult makes it (specs/ops.md).
-                    assert_eq!(at(&out, n), straight[k] * a, "{n} at {x},{y}");
+                    // Alpha 0: kept as it was (specs/ops.md).
+                    let want = if a == 0.0 { c[k] } else { straight[k] * a };
+                    assert_eq!(at(&out, n), want, "{n} at {x},{y}");
                     assert_eq!(at(&as_is, n), plain[k], "{n} at {x},{y} as is");
                 }
                 for n in ["A", "Z", "diffuse.R", "diffuse.G", "diffuse.B"] {
@@ -231,6 +342,110 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn an_overflow_where_alpha_is_0_is_not_nan() {
+        // ACEScct 100 is 2^(100 x 17.52 - 9.72) in ACEScg: Inf. Times alpha
+        // 0 it was NaN; the colour there is kept as it was.
+        let alpha = |x: i32, _| [0.0, 0.5][x as usize];
+        let input = image(
+            2,
+            1,
+            &[
+                ("A", &alpha),
+                ("B", &|_, _| 100.0),
+                ("G", &|_, _| 0.5),
+                ("R", &|_, _| 100.0),
+            ],
+        );
+        let values = [
+            ("config", "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1"),
+            ("from", "ACEScct"),
+            ("to", "ACEScg"),
+        ];
+        let op = built(&colorconvert::COLORCONVERT, &values, &[]).unwrap();
+        let out = compute(op.as_ref(), &[&input]).unwrap();
+        for n in ["R", "G", "B"] {
+            let (clear, half) = (sample(&out, n, 0, 0).unwrap(), sample(&out, n, 1, 0));
+            assert_eq!(
+                clear,
+                sample(&input, n, 0, 0).unwrap(),
+                "{n} where alpha is 0"
+            );
+            assert!(!half.unwrap().is_nan(), "{n} where alpha is 0.5");
+        }
+        assert!(sample(&out, "R", 1, 0).unwrap().is_infinite());
+    }
+
+    #[test]
+    fn the_inverse_of_a_cdl_without_one_is_refused_as_ocio_refuses_it() {
+        let error = |values: &[(&'static str, &str)]| built(&cdl::CDL, values, &[]).err();
+        for (values, says) in [
+            (
+                vec![("saturation", "0")],
+                "a saturation of 0 (--saturation)",
+            ),
+            (vec![("slope", "0")], "a slope of 0 (--slope)"),
+            (vec![("slope", "1,0,1"), ("saturation", "0.5")], "(--slope)"),
+        ] {
+            assert!(error(&values).is_none(), "{values:?} forward");
+            let inverse = [values.clone(), vec![("inverse", "true")]].concat();
+            let message = error(&inverse).expect("refused");
+            assert!(message.contains(says), "{message}");
+            assert!(message.contains("Singular Matrix can't be inverted"));
+            assert_eq!(message.lines().count(), 1);
+        }
+        // Read from a file, the same.
+        let dir = tempfile::tempdir().unwrap();
+        let cc = dir.path().join("flat.cc");
+        std::fs::write(
+            &cc,
+            "<ColorCorrection id=\"flat\"><SOPNode><Slope>1 1 1</Slope><Offset>0 0 0</Offset>\
+             <Power>1 1 1</Power></SOPNode><SatNode><Saturation>0</Saturation></SatNode>\
+             </ColorCorrection>",
+        )
+        .unwrap();
+        let file = cc.to_str().unwrap();
+        assert!(error(&[("file", file)]).is_none());
+        let message = error(&[("file", file), ("inverse", "true")]).expect("refused");
+        assert!(message.contains("a saturation of 0"), "{message}");
+        assert!(error(&[("slope", "1e-6"), ("inverse", "true")]).is_none());
+    }
+
+    /// A 1D LUT whose entries are infinite (OCIO's
+    /// lut3by1d_nan_infinity_example.clf): OCIO clamps them to +-FLT_MAX
+    /// and its SIMD renderer interpolates `(high - low) t + low`, so
+    /// between FLT_MAX and -FLT_MAX the difference overflows to -Inf and
+    /// the result is -Inf (PyPI's opencolorio 2.6 gives it); exactly on an
+    /// entry 0 x Inf is NaN.
+    #[test]
+    fn a_lut_with_infinite_entries_gives_ocios_infinities() {
+        let dir = tempfile::tempdir().unwrap();
+        let clf = dir.path().join("inf.clf");
+        std::fs::write(
+            &clf,
+            r#"<?xml version="1.0" encoding="UTF-8"?>
+<ProcessList id="inf" compCLFversion="3.0">
+  <LUT1D inBitDepth="32f" outBitDepth="32f">
+    <Array dim="4 3">0 0 0  0 0 inf  0 0 -inf  0 0 0</Array>
+  </LUT1D>
+</ProcessList>
+"#,
+        )
+        .unwrap();
+        let blue = [0.4f32, 0.5, 1.0 / 3.0, 2.0 / 3.0, 0.2];
+        let input = image(5, 1, &[("B", &|x, _| blue[x as usize])]);
+        let values = [("file", clf.to_str().unwrap())];
+        let op = built(&filetransform::FILETRANSFORM, &values, &[]).unwrap();
+        let out = compute(op.as_ref(), &[&input]).unwrap();
+        let b: Vec<f32> = (0..5).map(|x| sample(&out, "B", x, 0).unwrap()).collect();
+        assert_eq!(b[0], f32::NEG_INFINITY, "{b:?}");
+        assert_eq!(b[1], f32::NEG_INFINITY, "{b:?}");
+        assert!(b[2].is_nan(), "{b:?}");
+        assert_eq!(b[3], -f32::MAX, "{b:?}");
+        // Between 0 and FLT_MAX: finite, as OCIO's.
+        assert!(b[4].is_finite() && b[4] > 1e38, "{b:?}");
     }
 
     #[test]
@@ -329,6 +544,11 @@ mod tests {
             message.contains("(views: ACES 2.0 - SDR 100 nits (Rec.709), Un-tone-mapped"),
             "{message}"
         );
+        let message = error(
+            &ociodisplay::OCIODISPLAY,
+            &[v4, ("looks", GAMUT_LOOK), ("inverse", "true")],
+        );
+        assert!(message.contains("not --looks"), "{message}");
         let message = error(&ociolook::OCIOLOOK, &[v4, ("look", "grade")]);
         assert!(
             message.starts_with("no look 'grade' (looks: ACES 1.3 Reference Gamut Compression)"),
@@ -431,7 +651,12 @@ mod tests {
         ];
         let before = rgb.clone();
         let processor = config.get_processor("ACEScg", "ACEScct").unwrap();
-        Ocio(processor.default_cpu_processor(), processor.cache_id()).apply(&mut rgb);
+        Ocio(
+            processor.default_cpu_processor(),
+            processor.cache_id(),
+            Vec::new(),
+        )
+        .apply(&mut rgb);
         for i in 0..3 {
             let mut pixel = [before[0][i], before[1][i], before[2][i]];
             cpu.apply_rgb(&mut pixel);

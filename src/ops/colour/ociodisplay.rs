@@ -17,23 +17,22 @@ pub const OCIODISPLAY: Operation = Operation {
         let p = OciodisplayParams::read(args)?;
         let config = super::config(p.config.as_ref())?;
         let from = super::colour_space(&config, &p.from)?;
-        let displays = (0..config.num_displays())
-            .map(|i| config.display(i))
-            .collect();
         let display = match &p.display {
-            Some(name) => super::one_of("display", name, displays)?,
+            Some(name) => super::display(&config, name)?,
             None => config.default_display(),
         };
-        let views = (0..config.num_views(&display))
-            .map(|i| config.view(&display, i))
-            .collect();
         let view = match &p.display_view {
-            Some(name) => super::one_of("view", name, views)?,
+            Some(name) => super::one_of("view", name, super::views(&config, &display))?,
             None => config.default_view(&display),
         };
-        let transform = DisplayViewTransform::new(&from, &display, &view);
+        let mut transform = DisplayViewTransform::new(&from, &display, &view);
+        transform.direction = super::direction(p.inverse);
         let processor = match &p.looks {
             None => super::processor(&config, Transform::DisplayView(transform))?,
+            // OCIO's LegacyViewingPipeline has no direction.
+            Some(_) if p.inverse => {
+                return Err("ociodisplay --inverse takes the view's own looks, not --looks".into())
+            }
             Some(looks) => {
                 let mut pipeline = LegacyViewingPipeline::new();
                 pipeline.set_display_view_transform(Some(&transform));
@@ -59,6 +58,9 @@ params! {
         /// Looks applied instead of the view's own (a comma list, `-` for
         /// inverse).
         looks: Option<String>,
+        /// The inverse: display colour of the view back to the `from`
+        /// colour space.
+        inverse: bool,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,

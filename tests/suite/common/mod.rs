@@ -165,6 +165,23 @@ pub fn shared_more_images() -> Option<PathBuf> {
     None
 }
 
+/// OpenColorIO's own test files (`../shared/ocio-test-files`, or
+/// `$EXRCOMP_OCIO_TEST_FILES`), or `None`, a skipped check: CI need not
+/// have them.
+pub fn ocio_test_files() -> Option<PathBuf> {
+    let root = std::env::var_os("EXRCOMP_OCIO_TEST_FILES")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/ocio-test-files"));
+    if root.is_dir() {
+        return Some(root);
+    }
+    skip(&format!(
+        "OpenColorIO's test files {} are absent (set EXRCOMP_OCIO_TEST_FILES)",
+        root.display()
+    ));
+    None
+}
+
 /// One image by its path in the shared set (`DisplayWindow/t08.exr`): the
 /// shipped copy, else the shared set's, else `None` (a skipped check).
 pub fn public_image(name: &str) -> Option<PathBuf> {
