@@ -18,7 +18,7 @@ fn main() {
     }
     // A bug anywhere is one line to report and exit code 1, as a frame's is
     // (src/guard.rs), not Rust's report and 101.
-    let result = exrcomp::guard::catch(|| exrcomp::commands::run(cli.command))
+    let result = exrcomp::guard::catch(|| exrcomp::run::run(cli.command))
         .unwrap_or_else(|p| Err(exrcomp::error::Error::panicked(None, p)));
     if let Err(e) = result {
         eprintln!("exrcomp: error: {e}");

@@ -107,7 +107,7 @@ pub struct Job {
     /// Review media (PNG, JPEG, TIFF) instead of EXR: how they are written.
     pub media: Option<Review>,
     /// The slate this run writes before its frames (`--slate`), if any.
-    pub slate: Option<crate::slate::SlateFrame>,
+    pub slate: Option<crate::ops::sources::slate::SlateFrame>,
 }
 
 /// A review media output: its format's options, and a burn-in.

@@ -5,7 +5,7 @@
 //! (the first input's file), `{output}` (the file written) and
 //! `{attr:NAME}` (an attribute of the output's header).
 
-use crate::font;
+use crate::draw::font;
 use exr::meta::attribute::AttributeValue;
 use exr::meta::header::Header;
 use std::path::Path;
@@ -167,7 +167,7 @@ pub(crate) fn timecode(header: &Header) -> Option<String> {
 pub(crate) fn attribute_text(value: &AttributeValue) -> String {
     match value {
         AttributeValue::Text(text) => text.to_string(),
-        other => crate::info::value_text(other)
+        other => crate::tools::info::value_text(other)
             .trim_start_matches(':')
             .trim()
             .to_string(),

@@ -4,12 +4,12 @@
 //! outlines and Deadline job files.
 
 use crate::cli::{Cli, Farm, FarmJob};
-use crate::commands::DryRun;
 use crate::error::{Error, Result};
 use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
 use crate::io::sequence::parse_frame_list;
 use crate::io::writer::write_whole;
-use crate::report::FarmLog;
+use crate::run::report::FarmLog;
+use crate::run::DryRun;
 use clap::{CommandFactory, Parser, ValueHint};
 use std::collections::BTreeMap;
 use std::path::{Component, Path, PathBuf};
@@ -105,7 +105,7 @@ pub fn normalise(path: &Path) -> PathBuf {
 /// this very folder, else the real one.
 pub fn logical_working_folder() -> Result<PathBuf> {
     use std::os::unix::fs::MetadataExt;
-    let real = crate::commands::working_folder()?;
+    let real = crate::run::working_folder()?;
     let same = |a: &Path, b: &Path| match (std::fs::metadata(a), std::fs::metadata(b)) {
         (Ok(a), Ok(b)) => (a.dev(), a.ino()) == (b.dev(), b.ino()),
         _ => false,
@@ -311,7 +311,7 @@ pub fn task_command(
         .build()
         .map_err(|e| Error::internal(format!("cannot start {threads} threads: {e}")))?;
     let mut dry = pool
-        .install(|| crate::commands::execute(cli.command))?
+        .install(|| crate::run::execute(cli.command))?
         .expect("a frame-writing command's dry run says what it found");
     // The job file and the other files the command names are read too.
     dry.reads.extend(
@@ -339,10 +339,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     let (task, needs, dry) =
         task_command(&job.command, &job.frames, cwd, (job.threads, rules.log))?;
     if !dry.others.is_empty() {
-        eprintln!(
-            "exrcomp: warning: {}",
-            crate::commands::others_made(&dry.others)
-        );
+        eprintln!("exrcomp: warning: {}", crate::run::others_made(&dry.others));
     }
     let exrcomp = this_exrcomp()?;
     let name = job

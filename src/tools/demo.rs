@@ -3,14 +3,14 @@
 //! (specs/demo.md).
 
 use crate::cli::{LayerArgs, RunArgs};
-use crate::commands::{add, input_job, plate_job, run_job, run_with_progress};
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::engine::prepass::max_over_rows;
 use crate::error::{Error, Result};
-use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::FramePattern;
+use crate::ops::sources::plate::{PixelType, Plate, PlateKind};
 use crate::ops::{defocus, diffrender, merge, vblur};
-use crate::report::{count, Summary};
+use crate::run::report::{count, Summary};
+use crate::run::{add, input_job, plate_job, run_job, run_with_progress};
 use std::path::Path;
 
 /// The defocus's focus depth: the `Set`'s row at 47% of its height (its
@@ -244,7 +244,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
         })
         .collect::<Result<_>>()?;
     let titles: Vec<&str> = COLUMNS.iter().map(|(title, _)| *title).collect();
-    crate::contact_sheet::write(&sheet, PANEL_WIDTH.min(width), &titles, &rows)?;
+    crate::tools::contact_sheet::write(&sheet, PANEL_WIDTH.min(width), &titles, &rows)?;
     let (files, bytes) = folder_size(dir)?;
     talk(format!(
         "contact sheet: {} (columns: {}; rows: {})",

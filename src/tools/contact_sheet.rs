@@ -4,9 +4,9 @@
 //! through the engine's decoder and box-filtered into its panel as it goes:
 //! memory holds the panels, never a frame.
 
+use crate::draw::font;
 use crate::engine::decode::{decode_all, InputCursor};
 use crate::error::{Error, Result};
-use crate::font;
 use crate::io::parts::choose_part;
 use crate::io::png::{self, Rgb8};
 use crate::io::reader::ExrFile;

@@ -1,6 +1,8 @@
 //! The command line: the operations' subcommands made from their
 //! declarations (src/ops/declare.rs), the other commands declared here.
 
+pub mod job_file;
+
 use crate::ops::declare::Operation;
 use crate::params::*;
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
@@ -158,7 +160,7 @@ pub enum Command {
         output: String,
         /// What the plate shows.
         #[arg(long, value_enum, default_value = "bg")]
-        kind: crate::generate::PlateKind,
+        kind: crate::ops::sources::plate::PlateKind,
         /// Width in pixels.
         #[arg(long, default_value_t = 1920, allow_negative_numbers = true)]
         width: usize,
@@ -170,7 +172,7 @@ pub enum Command {
         origin: (i32, i32),
         /// Sample type of the colour channels.
         #[arg(long, value_enum, default_value = "half")]
-        pixel_type: crate::generate::PixelType,
+        pixel_type: crate::ops::sources::plate::PixelType,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -245,7 +247,7 @@ pub enum Size {
     Eight,
 }
 
-value_enum!(crate::report::FarmLog {
+value_enum!(crate::run::report::FarmLog {
     Frames => "frames": "a line per frame: written or kept",
     Openjd => "openjd": "those and openjd_progress: / openjd_status: lines",
     Deadline => "deadline": "those and Progress: N% lines",
@@ -515,7 +517,7 @@ pub struct RunArgs {
         value_name = "FORMAT",
         conflicts_with = "json"
     )]
-    pub progress: Option<crate::report::FarmLog>,
+    pub progress: Option<crate::run::report::FarmLog>,
     /// Check every frame's inputs and the outputs, print the files each
     /// output frame reads and writes (with --json as JSON), decode nothing
     /// and write nothing.
@@ -778,7 +780,7 @@ value_enum!(crate::engine::sources::MissingPolicy {
     Black => "black": "Use transparent black, shaped like the nearest frame of that input",
 });
 
-value_enum!(crate::generate::PlateKind {
+value_enum!(crate::ops::sources::plate::PlateKind {
     Bg => "bg": "Opaque grainy gradient with a checker pattern; RGBA and Z",
     Fg => "fg": "A soft-edged disc moving across a transparent frame; premultiplied RGBA, Z and screen-space motion vectors (forward.u, forward.v)",
     Object => "object": "Differential rendering's object alone: a shaded ball above the middle of a transparent frame; RGBA and Z",
@@ -788,7 +790,7 @@ value_enum!(crate::generate::PlateKind {
     Ball => "ball": "The demo's foreground for motion blur: a striped ball circling fast; premultiplied RGBA, Z, forward.u, forward.v",
 });
 
-value_enum!(crate::generate::PixelType {
+value_enum!(crate::ops::sources::plate::PixelType {
     Half => "half": "16-bit half floats",
     Float => "float": "32-bit floats",
 });

@@ -1,5 +1,7 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
+pub mod report;
+
 use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
 use crate::engine::fingerprint;
 use crate::engine::graph::NodeId;
@@ -14,8 +16,6 @@ use crate::engine::plan::{
 };
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
-use crate::farm;
-use crate::generate::Plate;
 use crate::io::attributes::Edits;
 use crate::io::burn_in::BurnIn;
 use crate::io::media::{Format, Media};
@@ -30,9 +30,11 @@ use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
 use crate::ops::resize::{passes, Filter, Target};
+use crate::ops::sources::plate::Plate;
+use crate::ops::sources::slate::{Slate, SlateFrame};
 use crate::params::DEFAULT_DWA_LEVEL;
-use crate::report::{count, FarmLog, Outcome, Report, Summary};
-use crate::slate::{Slate, SlateFrame};
+use crate::run::report::{count, FarmLog, Outcome, Report, Summary};
+use crate::tools::farm;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
@@ -74,7 +76,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             farm::write_job(&farm, &farm::logical_working_folder()?).map(|()| None)
         }
         Command::Run { job, output, run } => {
-            let mut plan = crate::job::load(&job, run.proxy_scale)?;
+            let mut plan = crate::cli::job_file::load(&job, run.proxy_scale)?;
             if let Some(output) = output {
                 plan.output = output;
             }
@@ -162,14 +164,14 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             run_job(&job, "transcode", &run, summary)
         }
         Command::Info { files, json } => info(&files, json).map(|()| None),
-        Command::Bench(args) => crate::bench::bench(&args).map(|()| None),
+        Command::Bench(args) => crate::tools::bench::bench(&args).map(|()| None),
         Command::Demo {
             dir,
             length,
             width,
             height,
             run,
-        } => crate::demo::demo(&dir, length, width, height, &run).map(|()| None),
+        } => crate::tools::demo::demo(&dir, length, width, height, &run).map(|()| None),
         Command::Generate {
             output,
             kind,
@@ -547,7 +549,7 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
     let plans = plan_parts(job, &job.frames[0])?;
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
-    let lines = crate::slate::lines(job, slate, header);
+    let lines = crate::ops::sources::slate::lines(job, slate, header);
     let source = Slate::new(display, &lines);
     let (output, frames) = (job.output.clone(), vec![slate.frame]);
     Ok(Some(Job {
@@ -1006,8 +1008,8 @@ impl Events for Progress<'_> {
 
 fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
     let describe = |path: &std::path::Path| match json {
-        true => crate::info::describe_json(path).map(|v| format!("{v}\n")),
-        false => crate::info::describe(path),
+        true => crate::tools::info::describe_json(path).map(|v| format!("{v}\n")),
+        false => crate::tools::info::describe(path),
     };
     if let [file] = files {
         print!("{}", describe(file)?);

@@ -4,10 +4,10 @@
 
 use crate::cli::{BenchArgs, Size};
 use crate::error::{Error, Result};
-use crate::farm::{parse_command, Flow};
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
 use crate::io::writer::write_whole;
+use crate::tools::farm::{parse_command, Flow};
 use serde_json::{json, Value};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -48,7 +48,7 @@ impl Job {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::job::load(Path::new(&inputs[0]), None)?;
+            let plan = crate::cli::job_file::load(Path::new(&inputs[0]), None)?;
             // The job file, then what it reads.
             inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
             if output.is_none() {
@@ -585,8 +585,8 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     }
     if let Some(path) = &args.report {
         let chart = match path.extension().and_then(|e| e.to_str()) {
-            Some("png") => crate::bench_chart::png(&record, baseline.as_ref()),
-            _ => crate::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
+            Some("png") => crate::tools::bench_chart::png(&record, baseline.as_ref()),
+            _ => crate::tools::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
         };
         write_whole(path, &chart)?;
     }

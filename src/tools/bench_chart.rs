@@ -100,7 +100,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 seconds: v,
             }));
             if !values.is_empty() {
-                let median = x(crate::bench::Stats::of(values).median);
+                let median = x(crate::tools::bench::Stats::of(values).median);
                 shapes.push(Shape::Line {
                     x1: median,
                     y1: y - 8.0,
@@ -180,12 +180,12 @@ pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
         match *shape {
             Shape::Text { x, y, ref text } => {
                 // The glyphs stand on the baseline, as SVG's text does.
-                let top = y - crate::font::HEIGHT as f64;
+                let top = y - crate::draw::font::HEIGHT as f64;
                 for (n, c) in text.chars().enumerate() {
-                    for gy in 0..crate::font::HEIGHT {
-                        for gx in 0..crate::font::WIDTH {
-                            if crate::font::lit(c, gx, gy) {
-                                let left = x + (n * crate::font::ADVANCE + gx) as f64;
+                    for gy in 0..crate::draw::font::HEIGHT {
+                        for gx in 0..crate::draw::font::WIDTH {
+                            if crate::draw::font::lit(c, gx, gy) {
+                                let left = x + (n * crate::draw::font::ADVANCE + gx) as f64;
                                 set(left, top + gy as f64, INK);
                             }
                         }
