@@ -2,7 +2,6 @@
 //! nodes, checked with errors that name the file's line, then built into one
 //! streaming `Graph`. The format: specs/job-format.md.
 
-use crate::cli::parse_tile;
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
 use crate::io::attributes::{parse_attrib, parse_erase, parse_fps, Attrib};
@@ -12,6 +11,7 @@ use crate::io::sequence::{split_time, InputTime};
 use crate::io::timecode::{parse_spec, TimecodeSpec};
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
+use crate::run::settings::parse_tile;
 use clap::ValueEnum;
 use exr::math::Vec2;
 use exr::meta::attribute::Rational;

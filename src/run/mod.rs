@@ -1,8 +1,10 @@
 //! Each subcommand as a job: resolve frames, check inputs, run, report.
 
 pub mod report;
+pub mod settings;
 
-use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
+use settings::{LayerArgs, RunArgs};
+
 use crate::engine::fingerprint;
 use crate::engine::graph::NodeId;
 use crate::engine::graph::{Graph, GraphBuilder, Node, Op};
@@ -34,16 +36,11 @@ use crate::ops::sources::plate::Plate;
 use crate::ops::sources::slate::{Slate, SlateFrame};
 use crate::params::DEFAULT_DWA_LEVEL;
 use crate::run::report::{count, FarmLog, Outcome, Report, Summary};
-use crate::tools::farm;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-
-pub fn run(command: Command) -> Result<()> {
-    execute(command).map(drop)
-}
 
 /// What a dry run of a frame-writing command found.
 pub struct DryRun {
@@ -57,190 +54,8 @@ pub struct DryRun {
     pub others: Vec<PathBuf>,
 }
 
-/// Runs `command`; a dry run of a frame-writing command gives what it found.
-pub fn execute(command: Command) -> Result<Option<DryRun>> {
-    match command {
-        Command::Op(call) => operation(call),
-        Command::Stitch { bands, output } => {
-            let pattern = FramePattern::output(&output.to_string_lossy())?;
-            if pattern.format() != Some(Format::Exr) {
-                return Err(Error::usage(format!(
-                    "stitch writes EXR files (it joins their chunks): {} is not one",
-                    output.display()
-                )));
-            }
-            refuse_overwriting(bands.clone(), [(None, output.clone())])?;
-            crate::io::stitch::stitch(&bands, &output).map(|()| None)
-        }
-        Command::Farm { farm } => {
-            farm::write_job(&farm, &farm::logical_working_folder()?).map(|()| None)
-        }
-        Command::Run { job, output, run } => {
-            let mut plan = crate::cli::job_file::load(&job, run.proxy_scale)?;
-            if let Some(output) = output {
-                plan.output = output;
-            }
-            let run = RunArgs {
-                frames: run.frames.clone().or(plan.frames),
-                compression: run.compression.clone().or(plan.compression),
-                all_parts: run.all_parts || plan.all_parts,
-                tile: run.tile.or(plan.tile),
-                scanline: run.scanline || (run.tile.is_none() && plan.scanline),
-                attribs: plan.attribs.into_iter().chain(run.attribs).collect(),
-                erase_attribs: plan
-                    .erase_attribs
-                    .into_iter()
-                    .chain(run.erase_attribs)
-                    .collect(),
-                timecode: run.timecode.or(plan.timecode),
-                fps: run.fps.or(plan.fps),
-                quality: run.quality.or(plan.quality),
-                bits: run.bits.or(plan.bits),
-                transfer: run.transfer.or(plan.transfer),
-                burn_in: run.burn_in.clone().or(plan.burn_in),
-                burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
-                slate: run.slate || plan.slate,
-                ..run
-            };
-            let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
-            let (mut job, summary) = input_job(
-                &texts,
-                &plan.output,
-                plan.graph,
-                plan.header_from,
-                &LayerArgs::default(),
-                &run,
-            )?;
-            // A read's own `part` key, where its file name has no `:PART`.
-            for (asked, part) in job.parts.iter_mut().zip(parts) {
-                if asked.is_none() {
-                    *asked = part;
-                }
-            }
-            run_job(&job, "run", &run, summary)
-        }
-        Command::Flatten {
-            input,
-            output,
-            part,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs {
-                part,
-                ..LayerArgs::default()
-            };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "flatten", &run, summary)
-        }
-        Command::Deepmerge {
-            inputs,
-            output,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs::default();
-            let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
-            job.merged[0] = inputs[1..]
-                .iter()
-                .map(|p| FramePattern::parse(p))
-                .collect::<Result<_>>()?;
-            run_job(&job, "deepmerge", &run, summary)
-        }
-        Command::Transcode {
-            input,
-            output,
-            level,
-            part,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs {
-                level,
-                part,
-                ..LayerArgs::default()
-            };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "transcode", &run, summary)
-        }
-        Command::Info { files, json } => info(&files, json).map(|()| None),
-        Command::Bench(args) => crate::tools::bench::bench(&args).map(|()| None),
-        Command::Demo {
-            dir,
-            length,
-            width,
-            height,
-            run,
-        } => crate::tools::demo::demo(&dir, length, width, height, &run).map(|()| None),
-        Command::Generate {
-            output,
-            kind,
-            width,
-            height,
-            origin,
-            pixel_type,
-            run,
-        } => {
-            let plate = Plate {
-                kind,
-                width,
-                height,
-                origin,
-                pixel_type,
-            };
-            let output = FramePattern::output(&output)?;
-            let frames = frame_list(&run)?.unwrap_or(vec![1]);
-            check_frame_count(&frames, &output)?;
-            if run.proxy_scale.is_some() {
-                return Err(Error::usage(
-                    "generate writes plates at their size: --proxy-scale is for commands that read inputs",
-                ));
-            }
-            let job = plate_job(plate, output, frames, &run)?;
-            run_job(&job, "generate", &run, Summary::default())
-        }
-    }
-}
-
-fn selection(layers: &LayerArgs) -> Selection {
-    Selection {
-        layers: layers.layers.clone(),
-        all: layers.all_layers,
-        view: layers.view.clone(),
-    }
-}
-
-/// An operation's job: its graph built from its declaration, after a first
-/// pass over the inputs for what it measures (none in a dry run).
-fn operation(call: Invocation) -> Result<Option<DryRun>> {
-    let op = call.op;
-    let mut args = Args {
-        op: op.name,
-        values: call.values,
-        layers: selection(&call.layers),
-        straight: call.straight,
-        job_file: false,
-    };
-    let header = op.header.unwrap_or(call.inputs.len() - 1);
-    let job = |inputs: &[String], graph, header| {
-        input_job(inputs, &call.output, graph, header, &call.layers, &call.run)
-    };
-    if let (Some(measure), false) = (op.measure, call.run.dry_run) {
-        let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
-        args.values.extend(measure(&args, &first)?);
-    }
-    if let Some(factor) = call.run.proxy_scale {
-        op.scale_lengths(&mut args, factor as f64)
-            .map_err(|m| Error::usage(format!("--proxy-scale: {m}")))?;
-    }
-    let (mut graph, inputs) = GraphBuilder::with_inputs(call.inputs.len());
-    (op.build)(&args, &mut graph, &inputs).map_err(Error::usage)?;
-    let (job, summary) = job(&call.inputs, graph.finish(), header)?;
-    run_job(&job, op.name, &call.run, summary)
-}
-
 /// Operation `op` with parameters `values` (as typed) on `inputs`.
-pub(crate) fn add(
+pub fn add(
     graph: &mut GraphBuilder,
     op: &'static Operation,
     values: &[(&'static str, &str)],
@@ -261,7 +76,7 @@ pub fn working_folder() -> Result<PathBuf> {
 }
 
 /// The frames `--frames` names, cut to the chunk `--chunk-from` names.
-fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
+pub fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
     let Some(text) = &run.frames else {
         return match run.chunk_from {
             Some(_) => Err(Error::usage(
@@ -279,7 +94,7 @@ fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
 /// comes from input `header_from`.
-pub(crate) fn input_job(
+pub fn input_job(
     texts: &[String],
     output: &str,
     graph: Graph,
@@ -434,7 +249,7 @@ fn luminance_inputs(
         .collect()
 }
 
-fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
+pub fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     if frames.len() > 1 && !output.is_sequence() {
         return Err(Error::usage(format!(
             "{} frames but the output {} has no frame number (use #### or %04d)",
@@ -445,7 +260,7 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     Ok(())
 }
 
-pub(crate) fn plate_job(
+pub fn plate_job(
     plate: Plate,
     output: FramePattern,
     frames: Vec<i64>,
@@ -549,7 +364,8 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
     let plans = plan_parts(job, &job.frames[0])?;
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
-    let lines = crate::ops::sources::slate::lines(job, slate, header);
+    let set: Vec<&str> = job.attributes.set.iter().map(|a| a.name.as_str()).collect();
+    let lines = crate::ops::sources::slate::lines(&job.output, &job.inputs, &set, slate, header);
     let source = Slate::new(display, &lines);
     let (output, frames) = (job.output.clone(), vec![slate.frame]);
     Ok(Some(Job {
@@ -663,12 +479,7 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code). A dry run plans every
 /// frame and gives what it found.
-pub(crate) fn run_job(
-    job: &Job,
-    label: &str,
-    run: &RunArgs,
-    summary: Summary,
-) -> Result<Option<DryRun>> {
+pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Option<DryRun>> {
     let slate = slate_job(job)?;
     let (reads, mut writes) = job.files();
     writes.extend(slate.iter().flat_map(|slate| slate.files().1));
@@ -880,7 +691,7 @@ fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
     })
 }
 
-pub(crate) fn run_with_progress(
+pub fn run_with_progress(
     job: &Job,
     label: &str,
     run: &RunArgs,
@@ -1003,37 +814,5 @@ impl Events for Progress<'_> {
         summary.failed.push((frame, error.clone()));
         drop(summary);
         self.report(frame, Outcome::Failed);
-    }
-}
-
-fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
-    let describe = |path: &std::path::Path| match json {
-        true => crate::tools::info::describe_json(path).map(|v| format!("{v}\n")),
-        false => crate::tools::info::describe(path),
-    };
-    if let [file] = files {
-        print!("{}", describe(file)?);
-        return Ok(());
-    }
-    let mut failed: Vec<Error> = Vec::new();
-    for path in files {
-        match describe(path) {
-            Ok(text) => print!("{text}"),
-            Err(e) => {
-                eprintln!("exrcomp: error: {e}");
-                failed.push(e);
-            }
-        }
-    }
-    match failed.first() {
-        None => Ok(()),
-        Some(first) => Err(Error::new(
-            first.kind,
-            format!(
-                "{} of {} files could not be read",
-                failed.len(),
-                files.len()
-            ),
-        )),
     }
 }

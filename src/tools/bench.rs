@@ -2,12 +2,13 @@
 //! writing afresh into a folder of its own, with the statistics, the
 //! machine and a comparison against an earlier record (specs/bench.md).
 
+use crate::cli::command_line::{parse_command, Flow};
 use crate::cli::{BenchArgs, Size};
 use crate::error::{Error, Result};
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
 use crate::io::writer::write_whole;
-use crate::tools::farm::{parse_command, Flow};
+use crate::tools::bench_stats::{verdict, Stats, Verdict};
 use serde_json::{json, Value};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -199,89 +200,6 @@ fn run_once(args: &[String], threads: Option<usize>) -> Result<Run> {
         output_bytes: 0.0,
         summary: serde_json::from_str(out.trim()).unwrap_or(Value::Null),
     })
-}
-
-/// Median, least, most and median absolute deviation of `values`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stats {
-    pub median: f64,
-    pub min: f64,
-    pub max: f64,
-    pub mad: f64,
-}
-
-fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    match n % 2 {
-        1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-    }
-}
-
-impl Stats {
-    pub fn of(values: &[f64]) -> Self {
-        assert!(!values.is_empty(), "statistics of no runs");
-        let mut sorted = values.to_vec();
-        sorted.sort_by(f64::total_cmp);
-        let m = median(&sorted);
-        let mut deviations: Vec<f64> = sorted.iter().map(|v| (v - m).abs()).collect();
-        deviations.sort_by(f64::total_cmp);
-        Stats {
-            median: m,
-            min: sorted[0],
-            max: sorted[sorted.len() - 1],
-            mad: median(&deviations),
-        }
-    }
-
-    fn json(&self, samples: &[f64]) -> Value {
-        json!({"median": self.median, "min": self.min, "max": self.max, "mad": self.mad, "runs": samples})
-    }
-
-    fn from_json(value: &Value) -> Option<Self> {
-        let get = |k: &str| value.get(k)?.as_f64();
-        Some(Stats {
-            median: get("median")?,
-            min: get("min")?,
-            max: get("max")?,
-            mad: get("mad")?,
-        })
-    }
-}
-
-/// How a job's wall time compares with the baseline's.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// Slower by no more than the tolerance, or faster.
-    Within,
-    /// Slower beyond the tolerance, but within the two records' noise.
-    Noise,
-    /// Slower beyond the tolerance and beyond the noise.
-    Regression,
-}
-
-/// How many median absolute deviations either side of the median count as
-/// a record's noise: robust to the odd run a busy machine slows down.
-const NOISE_MADS: f64 = 2.0;
-
-impl Stats {
-    fn noise(&self) -> (f64, f64) {
-        let spread = NOISE_MADS * self.mad;
-        (self.median - spread, self.median + spread)
-    }
-}
-
-/// `now` against `before` with a tolerance (0.05 for 5%): a regression only
-/// where the median is slower beyond it and the two records' noise
-/// intervals (median ± 2 MAD) do not overlap.
-pub fn verdict(now: &Stats, before: &Stats, tolerance: f64) -> Verdict {
-    if now.median <= before.median * (1.0 + tolerance) {
-        Verdict::Within
-    } else if now.noise().0 <= before.noise().1 {
-        Verdict::Noise
-    } else {
-        Verdict::Regression
-    }
 }
 
 /// One job's record.

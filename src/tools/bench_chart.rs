@@ -100,7 +100,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 seconds: v,
             }));
             if !values.is_empty() {
-                let median = x(crate::tools::bench::Stats::of(values).median);
+                let median = x(crate::tools::bench_stats::Stats::of(values).median);
                 shapes.push(Shape::Line {
                     x1: median,
                     y1: y - 8.0,

@@ -2,7 +2,6 @@
 //! composite in one pass, and a contact sheet of what each step did
 //! (specs/demo.md).
 
-use crate::cli::{LayerArgs, RunArgs};
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::engine::prepass::max_over_rows;
 use crate::error::{Error, Result};
@@ -10,6 +9,7 @@ use crate::io::sequence::FramePattern;
 use crate::ops::sources::plate::{PixelType, Plate, PlateKind};
 use crate::ops::{defocus, diffrender, merge, vblur};
 use crate::run::report::{count, Summary};
+use crate::run::settings::{LayerArgs, RunArgs};
 use crate::run::{add, input_job, plate_job, run_job, run_with_progress};
 use std::path::Path;
 

@@ -3,6 +3,7 @@
 //! frames it has not finished. Open Job Description templates, OpenCue
 //! outlines and Deadline job files.
 
+use crate::cli::command_line::{argv, parse_command, Flow, TaskCommand};
 use crate::cli::{Cli, Farm, FarmJob};
 use crate::error::{Error, Result};
 use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
@@ -10,7 +11,7 @@ use crate::io::sequence::parse_frame_list;
 use crate::io::writer::write_whole;
 use crate::run::report::FarmLog;
 use crate::run::DryRun;
-use clap::{CommandFactory, Parser, ValueHint};
+use clap::Parser;
 use std::collections::BTreeMap;
 use std::path::{Component, Path, PathBuf};
 
@@ -150,69 +151,6 @@ fn absolute(cwd: &Path, path: &str) -> String {
 /// Commands that render no frames, so no farm task can run them.
 const NOT_FRAMES: [&str; 4] = ["farm", "info", "stitch", "demo"];
 
-/// What a file argument of the command is to the farm (OpenJD's dataFlow).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Flow {
-    /// Read: an input, a job file.
-    In,
-    /// Written: `-o`.
-    Out,
-}
-
-/// The command every task runs, but for `--frames`.
-pub struct TaskCommand {
-    pub args: Vec<String>,
-    /// The arguments that are file names (absolute), by index in `args`.
-    pub files: Vec<(usize, Flow)>,
-}
-
-/// `command` parsed as exrcomp parses it: its arguments (joined values
-/// split, `--output=F` as `--output F`), the file arguments among them, the
-/// subcommand's name and its matches.
-pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::ArgMatches)> {
-    let args = split_joined_values(command);
-    let matches = crate::cli::command()
-        .try_get_matches_from(argv(&args))
-        .and_then(|m| crate::cli::refuse_not_applicable(&m).map(|()| m))
-        .map_err(|e| {
-            let message = e.to_string();
-            let first = message.lines().next().unwrap_or_default();
-            Error::usage(format!(
-                "the command to run does not parse: {}",
-                first.trim_start_matches("error: ")
-            ))
-        })?;
-    let (name, sub) = matches.subcommand().expect("a subcommand is required");
-    // A subcommand's indices count from its own name, which is args[0].
-    let definition = Cli::command();
-    let definition = definition
-        .find_subcommand(name)
-        .expect("the parsed subcommand exists");
-    let mut files = Vec::new();
-    for arg in definition.get_arguments() {
-        if arg.get_value_hint() != ValueHint::FilePath {
-            continue;
-        }
-        let flow = match arg.get_id().as_str() {
-            "output" => Flow::Out,
-            _ => Flow::In,
-        };
-        for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            // A value clap places outside the arguments is left alone, and
-            // a config's name (`ocio://NAME`) is no file.
-            if at < args.len() && !args[at].starts_with("ocio://") {
-                files.push((at, flow));
-            }
-        }
-    }
-    files.sort_by_key(|&(at, _)| at);
-    Ok((TaskCommand { args, files }, name.to_string(), sub.clone()))
-}
-
-fn argv(args: &[String]) -> impl Iterator<Item = String> + '_ {
-    std::iter::once("exrcomp".to_string()).chain(args.iter().cloned())
-}
-
 /// What each task of a job needs of its worker.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Needs {
@@ -311,7 +249,7 @@ pub fn task_command(
         .build()
         .map_err(|e| Error::internal(format!("cannot start {threads} threads: {e}")))?;
     let mut dry = pool
-        .install(|| crate::run::execute(cli.command))?
+        .install(|| crate::cli::commands::execute(cli.command))?
         .expect("a frame-writing command's dry run says what it found");
     // The job file and the other files the command names are read too.
     dry.reads.extend(
@@ -426,30 +364,6 @@ fn description(job: &FarmJob, needs: &Needs) -> String {
         text.truncate(at);
     }
     text
-}
-
-/// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that
-/// every value is an argument of its own (clap's indices count them so).
-fn split_joined_values(command: &[String]) -> Vec<String> {
-    let mut args = Vec::new();
-    let mut options = true;
-    for arg in command {
-        match arg.as_str() {
-            "--" => {
-                options = false;
-                args.push(arg.clone());
-            }
-            a if options && a.starts_with("--") && a.contains('=') => {
-                let (name, value) = a.split_once('=').expect("has =");
-                args.extend([name.to_string(), value.to_string()]);
-            }
-            a if options && a.starts_with("-o") && a.len() > 2 => {
-                args.extend(["-o".to_string(), a[2..].to_string()]);
-            }
-            _ => args.push(arg.clone()),
-        }
-    }
-    args
 }
 
 /// JSON quoting is valid YAML quoting: every string goes out quoted.

@@ -5,7 +5,7 @@
 //! JSON object per file.
 
 use crate::engine::graph::box_text;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::io::reader::ExrFile;
 use crate::io::standard_attributes::attributes;
 use crate::io::text::Utf8Text;
@@ -447,6 +447,40 @@ fn g(x: f64) -> String {
     } else {
         let sign = if exponent < 0 { '-' } else { '+' };
         format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
+    }
+}
+
+/// Prints what `files` hold, as text or JSON; a file that cannot be read
+/// is named and the others are still printed.
+pub fn print(files: &[std::path::PathBuf], json: bool) -> Result<()> {
+    let describe = |path: &std::path::Path| match json {
+        true => describe_json(path).map(|v| format!("{v}\n")),
+        false => describe(path),
+    };
+    if let [file] = files {
+        print!("{}", describe(file)?);
+        return Ok(());
+    }
+    let mut failed: Vec<Error> = Vec::new();
+    for path in files {
+        match describe(path) {
+            Ok(text) => print!("{text}"),
+            Err(e) => {
+                eprintln!("exrcomp: error: {e}");
+                failed.push(e);
+            }
+        }
+    }
+    match failed.first() {
+        None => Ok(()),
+        Some(first) => Err(Error::new(
+            first.kind,
+            format!(
+                "{} of {} files could not be read",
+                failed.len(),
+                files.len()
+            ),
+        )),
     }
 }
 

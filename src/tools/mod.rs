@@ -3,6 +3,7 @@
 
 pub mod bench;
 pub mod bench_chart;
+pub mod bench_stats;
 pub mod contact_sheet;
 pub mod demo;
 pub mod farm;
