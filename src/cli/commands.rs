@@ -13,79 +13,25 @@ use crate::ops::sources::plate::Plate;
 use crate::run::report::Summary;
 use crate::run::settings::{LayerArgs, RunArgs};
 use crate::run::{check_frame_count, frame_list, input_job, plate_job, run_job, DryRun};
+use std::path::{Path, PathBuf};
 
-/// Runs frame-writing `command`; a dry run of a frame-writing command gives what it found.
+/// Runs frame-writing `command`; a dry run gives what it found.
 pub fn execute(command: Command) -> Result<Option<DryRun>> {
     match command {
         Command::Op(call) => operation(call),
-        Command::Stitch { bands, output } => {
-            let pattern = FramePattern::output(&output.to_string_lossy())?;
-            if pattern.format() != Some(Format::Exr) {
-                return Err(Error::usage(format!(
-                    "stitch writes EXR files (it joins their chunks): {} is not one",
-                    output.display()
-                )));
-            }
-            refuse_overwriting(bands.clone(), [(None, output.clone())])?;
-            crate::io::stitch::stitch(&bands, &output).map(|()| None)
-        }
-        Command::Run { job, output, run } => {
-            let mut plan = crate::cli::job_file::load(&job, run.proxy_scale)?;
-            if let Some(output) = output {
-                plan.output = output;
-            }
-            let run = RunArgs {
-                frames: run.frames.clone().or(plan.frames),
-                compression: run.compression.clone().or(plan.compression),
-                all_parts: run.all_parts || plan.all_parts,
-                tile: run.tile.or(plan.tile),
-                scanline: run.scanline || (run.tile.is_none() && plan.scanline),
-                attribs: plan.attribs.into_iter().chain(run.attribs).collect(),
-                erase_attribs: plan
-                    .erase_attribs
-                    .into_iter()
-                    .chain(run.erase_attribs)
-                    .collect(),
-                timecode: run.timecode.or(plan.timecode),
-                fps: run.fps.or(plan.fps),
-                quality: run.quality.or(plan.quality),
-                bits: run.bits.or(plan.bits),
-                transfer: run.transfer.or(plan.transfer),
-                burn_in: run.burn_in.clone().or(plan.burn_in),
-                burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
-                slate: run.slate || plan.slate,
-                ..run
-            };
-            let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
-            let (mut job, summary) = input_job(
-                &texts,
-                &plan.output,
-                plan.graph,
-                plan.header_from,
-                &LayerArgs::default(),
-                &run,
-            )?;
-            // A read's own `part` key, where its file name has no `:PART`.
-            for (asked, part) in job.parts.iter_mut().zip(parts) {
-                if asked.is_none() {
-                    *asked = part;
-                }
-            }
-            run_job(&job, "run", &run, summary)
-        }
+        Command::Stitch { bands, output } => stitch(&bands, &output).map(|()| None),
+        Command::Run { job, output, run } => job_file(&job, output, run),
         Command::Flatten {
             input,
             output,
             part,
             run,
         } => {
-            let graph = Graph::identity();
             let layers = LayerArgs {
                 part,
                 ..LayerArgs::default()
             };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "flatten", &run, summary)
+            copy("flatten", input, &output, &layers, &run)
         }
         Command::Deepmerge {
             inputs,
@@ -108,14 +54,12 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             part,
             run,
         } => {
-            let graph = Graph::identity();
             let layers = LayerArgs {
                 level,
                 part,
                 ..LayerArgs::default()
             };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "transcode", &run, summary)
+            copy("transcode", input, &output, &layers, &run)
         }
         // The tools' commands are run by main.rs, and refused in a farm task
         // (src/tools/farm.rs) before they come here.
@@ -138,18 +82,75 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
                 origin,
                 pixel_type,
             };
-            let output = FramePattern::output(&output)?;
-            let frames = frame_list(&run)?.unwrap_or(vec![1]);
-            check_frame_count(&frames, &output)?;
-            if run.proxy_scale.is_some() {
-                return Err(Error::usage(
-                    "generate writes plates at their size: --proxy-scale is for commands that read inputs",
-                ));
-            }
-            let job = plate_job(plate, output, frames, &run)?;
-            run_job(&job, "generate", &run, Summary::default())
+            generate(plate, &output, &run)
         }
     }
+}
+
+fn stitch(bands: &[PathBuf], output: &Path) -> Result<()> {
+    let pattern = FramePattern::output(&output.to_string_lossy())?;
+    if pattern.format() != Some(Format::Exr) {
+        return Err(Error::usage(format!(
+            "stitch writes EXR files (it joins their chunks): {} is not one",
+            output.display()
+        )));
+    }
+    refuse_overwriting(bands.to_vec(), [(None, output.to_path_buf())])?;
+    crate::io::stitch::stitch(bands, output)
+}
+
+/// A job file's job, the command line's settings over its write node's.
+fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<DryRun>> {
+    let mut contents = crate::cli::job_file::load(path, run.proxy_scale)?;
+    if let Some(output) = output {
+        contents.output = output;
+    }
+    let run = RunArgs {
+        frames: run.frames.clone().or(contents.frames),
+        write: run.write.clone().over(contents.write),
+        ..run
+    };
+    let (texts, parts): (Vec<String>, Vec<Option<String>>) = contents.reads.into_iter().unzip();
+    let (mut job, summary) = input_job(
+        &texts,
+        &contents.output,
+        contents.graph,
+        contents.header_from,
+        &LayerArgs::default(),
+        &run,
+    )?;
+    // A read's own `part` key, where its file name has no `:PART`.
+    for (asked, part) in job.parts.iter_mut().zip(parts) {
+        if asked.is_none() {
+            *asked = part;
+        }
+    }
+    run_job(&job, "run", &run, summary)
+}
+
+/// `input` written again as `output` (`label`: flatten, transcode).
+fn copy(
+    label: &str,
+    input: String,
+    output: &str,
+    layers: &LayerArgs,
+    run: &RunArgs,
+) -> Result<Option<DryRun>> {
+    let (job, summary) = input_job(&[input], output, Graph::identity(), 0, layers, run)?;
+    run_job(&job, label, run, summary)
+}
+
+fn generate(plate: Plate, output: &str, run: &RunArgs) -> Result<Option<DryRun>> {
+    let output = FramePattern::output(output)?;
+    let frames = frame_list(run)?.unwrap_or(vec![1]);
+    check_frame_count(&frames, &output)?;
+    if run.proxy_scale.is_some() {
+        return Err(Error::usage(
+            "generate writes plates at their size: --proxy-scale is for commands that read inputs",
+        ));
+    }
+    let job = plate_job(plate, output, frames, run)?;
+    run_job(&job, "generate", run, Summary::default())
 }
 
 fn selection(layers: &LayerArgs) -> Selection {

@@ -6,7 +6,7 @@ pub mod commands;
 pub mod job_file;
 
 use crate::ops::declare::Operation;
-use crate::run::settings::{parse_level, LayerArgs, PartArgs, RunArgs};
+use crate::run::settings::{parse_level, CompressionName, LayerArgs, PartArgs, RunArgs};
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -265,17 +265,17 @@ value_enum!(Size {
 pub enum Farm {
     /// An Open Job Description job template (`openjd check`, `openjd run`,
     /// AWS Deadline Cloud): one task per chunk, each `--frames CHUNK --resume`.
-    Openjd(OpenJdJob),
+    Openjd(OpenJdArgs),
     /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
     /// layer (frames A-B or A-B:STEP); see the README for submitting it.
-    Opencue(OpenCueJob),
+    Opencue(OpenCueArgs),
     /// Deadline 10 job-info and plugin-info files for the CommandLine
     /// plugin (`deadlinecommand JOBINFO PLUGININFO`): frames A-B or A-B:STEP.
-    Deadline(DeadlineJob),
+    Deadline(DeadlineArgs),
 }
 
 impl Farm {
-    pub fn job(&self) -> &FarmJob {
+    pub fn job(&self) -> &FarmArgs {
         match self {
             Farm::Openjd(farm) => &farm.job,
             Farm::Opencue(farm) => &farm.job,
@@ -283,7 +283,7 @@ impl Farm {
         }
     }
 
-    pub fn job_mut(&mut self) -> &mut FarmJob {
+    pub fn job_mut(&mut self) -> &mut FarmArgs {
         match self {
             Farm::Openjd(farm) => &mut farm.job,
             Farm::Opencue(farm) => &mut farm.job,
@@ -295,7 +295,7 @@ impl Farm {
 /// A local command to run on a farm, in frame chunks: what every farm takes.
 /// (An option of one farm only is declared with it, so another refuses it.)
 #[derive(Args)]
-pub struct FarmJob {
+pub struct FarmArgs {
     /// All the frames, as --frames takes them.
     #[arg(long, allow_hyphen_values = true)]
     pub frames: String,
@@ -319,9 +319,9 @@ pub struct FarmJob {
 
 /// `exrcomp farm openjd`: the options every farm takes and OpenJD's own.
 #[derive(Args)]
-pub struct OpenJdJob {
+pub struct OpenJdArgs {
     #[command(flatten)]
-    pub job: FarmJob,
+    pub job: FarmArgs,
     /// Let the scheduler chunk the frames (a CHUNK[INT] task parameter, the
     /// TASK_CHUNKING extension) instead of listing the chunks.
     #[arg(long)]
@@ -339,9 +339,9 @@ pub struct OpenJdJob {
 
 /// `exrcomp farm opencue`: the options every farm takes and OpenCue's own.
 #[derive(Args)]
-pub struct OpenCueJob {
+pub struct OpenCueArgs {
     #[command(flatten)]
-    pub job: FarmJob,
+    pub job: FarmArgs,
     /// The layer's service.
     #[arg(long, default_value = "shell")]
     pub service: String,
@@ -349,9 +349,9 @@ pub struct OpenCueJob {
 
 /// `exrcomp farm deadline`: the options every farm takes.
 #[derive(Args)]
-pub struct DeadlineJob {
+pub struct DeadlineArgs {
     #[command(flatten)]
-    pub job: FarmJob,
+    pub job: FarmArgs,
 }
 
 fn parse_chart(text: &str) -> Result<PathBuf, String> {
@@ -559,8 +559,8 @@ pub fn command() -> clap::Command {
             match compression_default(&name) {
                 Some(default) => sub.mut_arg("compression", |arg| {
                     arg.help(format!(
-                        "Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, \
-                         dwab (default: {default})"
+                        "Output compression: {} (default: {default})",
+                        CompressionName::names()
                     ))
                 }),
                 None => sub,

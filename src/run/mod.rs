@@ -134,7 +134,7 @@ pub fn input_job(
     // that each chunk of a farm job counts its timecode from the same first
     // frame, and only the chunk starting there writes the slate.
     let shot = match &run.frames {
-        Some(_) if attributes.needs_anchor() || run.slate => default_frames(&inputs, &times)?,
+        Some(_) if attributes.needs_anchor() || run.write.slate => default_frames(&inputs, &times)?,
         _ => frames.clone(),
     };
     if attributes.needs_anchor() {
@@ -142,7 +142,7 @@ pub fn input_job(
     }
     check_frame_count(&frames, &output)?;
     let slate = slate_frame(run, &output, &frames, &shot)?;
-    if run.all_parts {
+    if run.write.all_parts {
         check_all_parts(texts, &parts, layers)?;
     }
     let media = review(&output, run)?;
@@ -151,34 +151,28 @@ pub fn input_job(
         &inputs,
         &parts,
         layers,
-        run.all_parts,
+        run.write.all_parts,
         &graph,
         &resolved.frames,
     );
     let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
-    let job = Job {
+    let reads = Job {
         merged: vec![Vec::new(); inputs.len()],
         inputs,
         times,
         parts,
         view: layers.view.clone(),
         level: layers.level,
-        output,
-        frames: resolved.frames,
-        graph,
+        ..engine_job(
+            output,
+            resolved.frames,
+            graph,
+            HeaderBase::Input(header_from),
+        )
+    };
+    let job = Job {
         compression: parse_compression(run)?,
-        header_base: HeaderBase::Input(header_from),
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
-        max_output_pixels: run.max_output_pixels,
-        all_parts: run.all_parts,
-        attributes,
-        media,
-        slate,
+        ..written_as(reads, run, attributes, media, slate)
     };
     let summary = Summary {
         warnings: crate::engine::assumptions::warnings(&job, texts),
@@ -272,19 +266,8 @@ pub fn plate_job(
     attributes.anchor(frames[0]);
     let slate = slate_frame(run, &output, &frames, &frames)?;
     let compression = parse_compression(run)?.unwrap_or(Compression::ZIP16);
-    Ok(Job {
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
-        max_output_pixels: run.max_output_pixels,
-        attributes,
-        media,
-        slate,
-        ..sourced_job(plate, display, output, frames, compression)
-    })
+    let job = sourced_job(plate, display, output, frames, compression);
+    Ok(written_as(job, run, attributes, media, slate))
 }
 
 /// A job of no inputs: `source` (an op of none) over `display` for
@@ -299,6 +282,27 @@ fn sourced_job(
 ) -> Job {
     let mut graph = GraphBuilder::default();
     graph.add(source, &[]);
+    let frames = frames
+        .into_iter()
+        .map(|frame| FrameSources {
+            frame,
+            inputs: Vec::new(),
+        })
+        .collect();
+    Job {
+        compression: Some(compression),
+        ..engine_job(output, frames, graph.finish(), HeaderBase::New(display))
+    }
+}
+
+/// The one engine job literal: `graph` over `frames` into `output`, reading
+/// nothing yet, written as a run without options writes.
+fn engine_job(
+    output: FramePattern,
+    frames: Vec<FrameSources>,
+    graph: Graph,
+    header_base: HeaderBase,
+) -> Job {
     Job {
         inputs: Vec::new(),
         times: Vec::new(),
@@ -307,16 +311,10 @@ fn sourced_job(
         view: None,
         level: None,
         output,
-        frames: frames
-            .into_iter()
-            .map(|frame| FrameSources {
-                frame,
-                inputs: Vec::new(),
-            })
-            .collect(),
-        graph: graph.finish(),
-        compression: Some(compression),
-        header_base: HeaderBase::New(display),
+        frames,
+        graph,
+        compression: None,
+        header_base,
         blocks: OutputBlocks::FollowInput,
         strip_rows: None,
         zip_level: crate::io::zip::DEFAULT_LEVEL,
@@ -331,6 +329,31 @@ fn sourced_job(
     }
 }
 
+/// `job` written as `run` says, with its attribute edits, review media and
+/// slate.
+fn written_as(
+    job: Job,
+    run: &RunArgs,
+    attributes: Edits,
+    media: Option<Review>,
+    slate: Option<SlateFrame>,
+) -> Job {
+    Job {
+        blocks: run.blocks(),
+        strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
+        resume: run.resume,
+        keep_going: run.keep_going,
+        rows: run.rows,
+        max_output_pixels: run.max_output_pixels,
+        all_parts: run.write.all_parts,
+        attributes,
+        media,
+        slate,
+        ..job
+    }
+}
+
 /// The slate `run` writes, if it asks for one and starts at the shot's first
 /// frame: numbered one before it, introducing `shot`'s frames. Its number
 /// must be a file of its own: the output a sequence, not one of its frames.
@@ -340,7 +363,7 @@ fn slate_frame(
     frames: &[i64],
     shot: &[i64],
 ) -> Result<Option<SlateFrame>> {
-    if !run.slate || frames[0] != shot[0] {
+    if !run.write.slate || frames[0] != shot[0] {
         return Ok(None);
     }
     let frame = shot[0] - 1;
@@ -389,11 +412,11 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
 fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
     let format = output.format().unwrap_or(Format::Exr);
     let given: Vec<&str> = [
-        ("--quality", run.quality.is_some()),
-        ("--bits", run.bits.is_some()),
-        ("--transfer", run.transfer.is_some()),
-        ("--burn-in", run.burn_in.is_some()),
-        ("--burn-in-corner", run.burn_in_corner.is_some()),
+        ("--quality", run.write.quality.is_some()),
+        ("--bits", run.write.bits.is_some()),
+        ("--transfer", run.write.transfer.is_some()),
+        ("--burn-in", run.write.burn_in.is_some()),
+        ("--burn-in-corner", run.write.burn_in_corner.is_some()),
     ]
     .into_iter()
     .filter_map(|(name, given)| given.then_some(name))
@@ -408,11 +431,11 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         };
     }
     let exr_only = [
-        ("--compression", run.compression.is_some()),
+        ("--compression", run.write.compression.is_some()),
         ("--dwa-level", run.dwa_level.is_some()),
-        ("--tile", run.tile.is_some()),
+        ("--tile", run.write.tile.is_some()),
         ("--rows", run.rows.is_some()),
-        ("--all-parts", run.all_parts),
+        ("--all-parts", run.write.all_parts),
     ];
     if let Some((name, _)) = exr_only.iter().find(|(_, given)| *given) {
         return Err(Error::usage(format!(
@@ -420,12 +443,18 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
             output.display()
         )));
     }
-    let media = Media::new(format, run.bits, run.quality, run.transfer)
-        .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
+    let media = Media::new(
+        format,
+        run.write.bits,
+        run.write.quality,
+        run.write.transfer,
+    )
+    .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
     let burn_in = run
+        .write
         .burn_in
         .as_deref()
-        .map(|text| BurnIn::parse(text, run.burn_in_corner.unwrap_or_default()))
+        .map(|text| BurnIn::parse(text, run.write.burn_in_corner.unwrap_or_default()))
         .transpose()
         .map_err(Error::usage)?;
     Ok(Some(Review { media, burn_in }))
@@ -434,36 +463,17 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
 /// The attribute edits `run` asks for.
 fn edits(run: &RunArgs) -> Result<Edits> {
     Edits::new(
-        run.erase_attribs.clone(),
-        run.attribs.clone(),
-        run.fps,
-        run.timecode,
+        run.write.erase_attribs.clone(),
+        run.write.attribs.clone(),
+        run.write.fps,
+        run.write.timecode,
     )
     .map_err(Error::usage)
 }
 
 fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
-    let dwa_level = Some(run.dwa_level.unwrap_or(DEFAULT_DWA_LEVEL));
-    let compression = match run.compression.as_deref().map(str::to_ascii_lowercase) {
-        None => None,
-        Some(name) => Some(match name.as_str() {
-            "none" => Compression::Uncompressed,
-            "rle" => Compression::RLE,
-            "zips" => Compression::ZIP1,
-            "zip" => Compression::ZIP16,
-            "piz" => Compression::PIZ,
-            "pxr24" => Compression::PXR24,
-            "b44" => Compression::B44,
-            "b44a" => Compression::B44A,
-            "dwaa" => Compression::DWAA(dwa_level),
-            "dwab" => Compression::DWAB(dwa_level),
-            other => {
-                return Err(Error::usage(format!(
-                    "unknown compression '{other}' (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab)"
-                )))
-            }
-        }),
-    };
+    let dwa_level = run.dwa_level.unwrap_or(DEFAULT_DWA_LEVEL);
+    let compression = run.write.compression.map(|c| c.compression(dwa_level));
     let dwa = matches!(
         compression,
         Some(Compression::DWAA(_) | Compression::DWAB(_))

@@ -20,14 +20,14 @@ const SCHEMA: &str = "exrcomp-bench-1";
 
 /// A job to time: exrcomp's arguments, the one that names the output (set
 /// anew for each run) and the input patterns (for `--cold`).
-struct Job {
+struct TimedCommand {
     name: String,
     args: Vec<String>,
     output: usize,
     inputs: Vec<String>,
 }
 
-impl Job {
+impl TimedCommand {
     /// From a command (`over a.####.exr b.####.exr -o c.####.exr`) or a job
     /// file alone (`shot.toml`).
     fn new(name: String, command: &[String]) -> Result<Self> {
@@ -58,7 +58,7 @@ impl Job {
             }
         }
         let output = output.ok_or_else(|| Error::usage("the command to time names no output"))?;
-        Ok(Job {
+        Ok(TimedCommand {
             name,
             args: task.args,
             output,
@@ -203,7 +203,7 @@ fn run_once(args: &[String], threads: Option<usize>) -> Result<Run> {
 }
 
 /// One job's record.
-fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
+fn measure(job: &TimedCommand, args: &BenchArgs, folder: &Path) -> Result<Value> {
     let files = job.input_files();
     let mut runs = Vec::new();
     for k in 0..args.warmup + args.runs {
@@ -320,23 +320,13 @@ fn build() -> Value {
     })
 }
 
-/// The standard workload at `size`: plates generated once into `cache`
-/// (deterministic bytes, so every node runs the same), and the jobs.
-fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
-    let (width, height) = match size {
-        Size::Hd => (1920, 1080),
-        Size::Uhd => (3840, 2160),
-        Size::Eight => (7680, 4320),
-    };
-    // Absolute: the job file names the plates, and is read from its folder.
-    let folder = std::path::absolute(cache.join(format!("{width}x{height}-{frames}")))
-        .map_err(|e| Error::usage(format!("{}: {e}", cache.display())))?;
-    let plate = |name: &str| {
-        folder
-            .join(format!("{name}.####.exr"))
-            .to_string_lossy()
-            .into_owned()
-    };
+/// The standard workload's plates at `size`, `frames` of each, generated
+/// where `plate` names them unless their last frame is there.
+fn generate_plates(
+    plate: &dyn Fn(&str) -> String,
+    (width, height): (usize, usize),
+    frames: usize,
+) -> Result<()> {
     let range = format!("1-{frames}");
     let layers = [
         ("bg", "bg", "0,0"),
@@ -366,6 +356,12 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
         ];
         run_once(&args.map(String::from), None)?;
     }
+    Ok(())
+}
+
+/// The workload's job file (over, then blur) in `folder`, reading the
+/// plates `plate` names.
+fn write_over_blur(folder: &Path, plate: &dyn Fn(&str) -> String) -> Result<PathBuf> {
     let job_file = folder.join("over_blur.toml");
     std::fs::write(
         &job_file,
@@ -379,6 +375,29 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
         ),
     )
     .map_err(|e| Error::output(&job_file, None, format!("cannot write: {e}")))?;
+    Ok(job_file)
+}
+
+/// The standard workload at `size`: plates generated once into `cache`
+/// (deterministic bytes, so every node runs the same), and the jobs.
+fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<TimedCommand>> {
+    let (width, height) = match size {
+        Size::Hd => (1920, 1080),
+        Size::Uhd => (3840, 2160),
+        Size::Eight => (7680, 4320),
+    };
+    // Absolute: the job file names the plates, and is read from its folder.
+    let folder = std::path::absolute(cache.join(format!("{width}x{height}-{frames}")))
+        .map_err(|e| Error::usage(format!("{}: {e}", cache.display())))?;
+    let plate = |name: &str| {
+        folder
+            .join(format!("{name}.####.exr"))
+            .to_string_lossy()
+            .into_owned()
+    };
+    let range = format!("1-{frames}");
+    generate_plates(&plate, (width, height), frames)?;
+    let job_file = write_over_blur(&folder, &plate)?;
     let mut jobs: Vec<(&str, Vec<String>)> = vec![
         (
             "transcode",
@@ -447,7 +466,7 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
             if command[0] != "run" && !command[0].ends_with(".toml") {
                 command.extend(["--frames".into(), range.clone()]);
             }
-            Job::new(name.to_string(), &command)
+            TimedCommand::new(name.to_string(), &command)
         })
         .collect()
 }
@@ -459,7 +478,7 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
             let cache = args.cache.clone().unwrap_or_else(default_cache);
             standard(args.size, args.frames, &cache)?
         }
-        (false, false) => vec![Job::new(args.name.clone(), &args.command)?],
+        (false, false) => vec![TimedCommand::new(args.name.clone(), &args.command)?],
         (true, false) => return Err(Error::usage("give --standard or a command, not both")),
         (false, true) => {
             return Err(Error::usage(
@@ -471,7 +490,7 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     // the runs, which may take long).
     let records = [&args.json, &args.report].into_iter().flatten();
     refuse_overwriting(
-        jobs.iter().flat_map(Job::input_files),
+        jobs.iter().flat_map(TimedCommand::input_files),
         records.map(|path| (None, path.clone())),
     )?;
     let folder = std::env::temp_dir().join(format!("exrcomp-bench-{}", std::process::id()));
@@ -550,13 +569,7 @@ fn print_table(record: &Value, baseline: Option<&Value>, tolerance: f64) -> Vec<
     for job in record["jobs"].as_array().into_iter().flatten() {
         let name = job["name"].as_str().unwrap_or("?");
         let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
-        let before = baseline
-            .and_then(|b| {
-                b["jobs"]
-                    .as_array()?
-                    .iter()
-                    .find(|j| j["name"] == job["name"])
-            })
+        let before = crate::tools::bench_stats::same_job(baseline, job)
             .and_then(|j| Stats::from_json(&j["wall_seconds"]));
         let comparison = match before {
             None => String::new(),

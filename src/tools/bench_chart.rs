@@ -60,13 +60,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 .into(),
     }];
     for (i, job) in jobs.iter().enumerate() {
-        let before = baseline
-            .and_then(|b| {
-                b["jobs"]
-                    .as_array()?
-                    .iter()
-                    .find(|j| j["name"] == job["name"])
-            })
+        let before = crate::tools::bench_stats::same_job(baseline, job)
             .map(runs)
             .unwrap_or_default();
         let now = runs(job);
@@ -181,15 +175,8 @@ pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
             Shape::Text { x, y, ref text } => {
                 // The glyphs stand on the baseline, as SVG's text does.
                 let top = y - crate::draw::font::HEIGHT as f64;
-                for (n, c) in text.chars().enumerate() {
-                    for gy in 0..crate::draw::font::HEIGHT {
-                        for gx in 0..crate::draw::font::WIDTH {
-                            if crate::draw::font::lit(c, gx, gy) {
-                                let left = x + (n * crate::draw::font::ADVANCE + gx) as f64;
-                                set(left, top + gy as f64, INK);
-                            }
-                        }
-                    }
+                for (px, py) in crate::draw::font::pixels(text, 1) {
+                    set(x + px as f64, top + py as f64, INK);
                 }
             }
             Shape::Line {

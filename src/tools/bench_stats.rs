@@ -85,3 +85,11 @@ pub fn verdict(now: &Stats, before: &Stats, tolerance: f64) -> Verdict {
         Verdict::Regression
     }
 }
+
+/// `record`'s job of `job`'s name (a baseline's, to compare with).
+pub fn same_job<'a>(record: Option<&'a Value>, job: &Value) -> Option<&'a Value> {
+    record?["jobs"]
+        .as_array()?
+        .iter()
+        .find(|j| j["name"] == job["name"])
+}

@@ -4,7 +4,7 @@
 //! outlines and Deadline job files.
 
 use crate::cli::command_line::{argv, parse_command, Flow, TaskCommand};
-use crate::cli::{Cli, Farm, FarmJob};
+use crate::cli::{Cli, Farm, FarmArgs};
 use crate::error::{Error, Result};
 use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
 use crate::io::sequence::parse_frame_list;
@@ -349,7 +349,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
 }
 
 /// What the job does and needs, for a render manager's view of it.
-fn description(job: &FarmJob, needs: &Needs) -> String {
+fn description(job: &FarmArgs, needs: &Needs) -> String {
     let mut text = format!(
         "exrcomp {}: frames {} in chunks of {}; each task: --threads {}, at most {} MiB",
         job.command.join(" "),
@@ -480,7 +480,7 @@ impl Tasks {
 
 /// An Open Job Description job (specification 2023-09): its template and
 /// the values of its job parameters.
-pub struct OpenJdJob {
+pub struct OpenJdArgs {
     pub template: String,
     /// `{"NAME": "VALUE"}`, as `openjd run -p file://FILE` and render
     /// managers take job parameters.
@@ -506,7 +506,7 @@ pub fn openjd_template(
     tasks: &Tasks,
     needs: &Needs,
     (name, description): (&str, String),
-) -> OpenJdJob {
+) -> OpenJdArgs {
     let command = &task.args;
     let mut parameters = Vec::new();
     let mut values = serde_json::Map::new();
@@ -607,7 +607,7 @@ pub fn openjd_template(
         )
         .collect();
     let values = serde_json::to_string_pretty(&values).expect("JSON values serialise") + "\n";
-    OpenJdJob {
+    OpenJdArgs {
         template,
         values,
         bundle_values,
@@ -693,7 +693,7 @@ fn shell_quote(arg: &str) -> String {
 pub fn opencue_outline(
     exrcomp: &Path,
     command: &[String],
-    (job, service): (&FarmJob, &str),
+    (job, service): (&FarmArgs, &str),
     (name, needs): (&str, &Needs),
 ) -> Result<String> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "OpenCue")?;
@@ -730,7 +730,7 @@ pub fn opencue_outline(
 }
 
 /// A Deadline job: its job-info and plugin-info files.
-pub struct DeadlineJob {
+pub struct DeadlineArgs {
     pub job_info: String,
     pub plugin_info: String,
 }
@@ -746,10 +746,10 @@ pub struct DeadlineJob {
 pub fn deadline_job(
     exrcomp: &Path,
     task: &TaskCommand,
-    job: &FarmJob,
+    job: &FarmArgs,
     needs: &Needs,
     (name, description): (&str, String),
-) -> Result<DeadlineJob> {
+) -> Result<DeadlineArgs> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
     // Key=value lines: a value holds no line break; the CommandLine plugin
     // splits Arguments at spaces outside double quotes.
@@ -822,7 +822,7 @@ pub fn deadline_job(
         ("Shell".to_string(), "default".to_string()),
         ("ShellExecute".to_string(), "False".to_string()),
     ];
-    Ok(DeadlineJob {
+    Ok(DeadlineArgs {
         job_info: lines(&info),
         plugin_info: lines(&plugin),
     })
