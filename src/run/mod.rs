@@ -1,4 +1,7 @@
-//! Each subcommand as a job: resolve frames, check inputs, run, report.
+//! The run layer, between the front ends (src/cli/, src/tools/) and the
+//! engine: engine jobs made from inputs, a graph and the run settings
+//! (src/run/settings.rs), their frames resolved and inputs checked, then
+//! run with their progress and summary (src/run/report.rs).
 
 pub mod report;
 pub mod settings;
