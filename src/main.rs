@@ -1,3 +1,7 @@
+use exrcomp::cli::Command;
+use exrcomp::error::Result;
+use exrcomp::tools;
+
 fn main() {
     keep_freed_memory();
     let mut cli = exrcomp::cli::parse();
@@ -18,7 +22,7 @@ fn main() {
     }
     // A bug anywhere is one line to report and exit code 1, as a frame's is
     // (src/guard.rs), not Rust's report and 101.
-    let result = exrcomp::guard::catch(|| exrcomp::commands::run(cli.command))
+    let result = exrcomp::guard::catch(|| run(cli.command))
         .unwrap_or_else(|p| Err(exrcomp::error::Error::panicked(None, p)));
     if let Err(e) = result {
         eprintln!("exrcomp: error: {e}");
@@ -27,6 +31,25 @@ fn main() {
             exrcomp::error::Kind::Interrupted => exrcomp::engine::interrupt::exit_code(),
             kind => kind.exit_code(),
         });
+    }
+}
+
+/// Runs `command`: a tool's (src/tools/), or a job's (src/cli/commands.rs).
+fn run(command: Command) -> Result<()> {
+    match command {
+        Command::Info { files, json } => tools::info::print(&files, json),
+        Command::Bench(args) => tools::bench::bench(&args),
+        Command::Demo {
+            dir,
+            length,
+            width,
+            height,
+            run,
+        } => tools::demo::demo(&dir, length, width, height, &run),
+        Command::Farm { farm } => {
+            tools::farm::write_job(&farm, &tools::farm::logical_working_folder()?)
+        }
+        job => exrcomp::cli::commands::execute(job).map(drop),
     }
 }
 

@@ -5,7 +5,7 @@
 //! (the first input's file), `{output}` (the file written) and
 //! `{attr:NAME}` (an attribute of the output's header).
 
-use crate::font;
+use crate::draw::font;
 use exr::meta::attribute::AttributeValue;
 use exr::meta::header::Header;
 use std::path::Path;

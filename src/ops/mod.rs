@@ -17,6 +17,7 @@ pub mod premult;
 pub mod reformat;
 pub mod resize;
 pub mod shuffle;
+pub mod sources;
 pub mod stereo;
 #[cfg(test)]
 pub mod testing;

@@ -219,7 +219,7 @@ fn a_planted_delay_is_a_regression_and_a_faster_run_is_not() {
     // Each run 1.5 s slower (several times the job, and far beyond this
     // machine's noise): caught, naming the job and both figures. (That 2%
     // is within the tolerance and a spread-out record within noise is
-    // tested on known samples in src/bench.rs.)
+    // tested on known samples in src/tools/bench_stats.rs.)
     let slow = timed("slow.json", Some("base.json"), Some("1.5"));
     assert_eq!(slow.status.code(), Some(1), "{}", stderr(&slow));
     assert!(stderr(&slow).contains("REGRESSION"), "{}", stderr(&slow));

@@ -54,7 +54,7 @@ fn lit(lines: &[&str], height: usize, x: usize, y: usize) -> bool {
     let (c, column) = (gx / 6, gx % 6);
     text.chars()
         .nth(c)
-        .is_some_and(|c| column < 5 && exrcomp::font::lit(c, column, gy))
+        .is_some_and(|c| column < 5 && exrcomp::draw::font::lit(c, column, gy))
 }
 
 #[test]

@@ -4,9 +4,9 @@
 //! through the engine's decoder and box-filtered into its panel as it goes:
 //! memory holds the panels, never a frame.
 
+use crate::draw::font;
 use crate::engine::decode::{decode_all, InputCursor};
 use crate::error::{Error, Result};
-use crate::font;
 use crate::io::media::{png_file, Rgb8};
 use crate::io::parts::choose_part;
 use crate::io::reader::ExrFile;
@@ -156,19 +156,10 @@ fn srgb(v: f64) -> u8 {
 
 /// Draws `text` at `(x, y)`, cut at `room` pixels wide.
 fn draw_text(sheet: &mut Rgb8, text: &str, (x, y): (usize, usize), room: usize) {
-    for (n, c) in text.chars().enumerate() {
-        for gy in 0..font::HEIGHT * TEXT_SCALE {
-            for gx in 0..font::WIDTH * TEXT_SCALE {
-                let px = n * font::ADVANCE * TEXT_SCALE + gx;
-                let (sx, sy) = (x + px, y + gy);
-                if px < room
-                    && sx < sheet.width
-                    && sy < sheet.height
-                    && font::lit(c, gx / TEXT_SCALE, gy / TEXT_SCALE)
-                {
-                    sheet.pixels[sy * sheet.width + sx] = TEXT;
-                }
-            }
+    for (px, py) in font::pixels(text, TEXT_SCALE) {
+        let (sx, sy) = (x + px, y + py);
+        if px < room && sx < sheet.width && sy < sheet.height {
+            sheet.pixels[sy * sheet.width + sx] = TEXT;
         }
     }
 }

@@ -4,7 +4,7 @@
 //! each part closed by its chunk check; `--json` gives the same facts as one
 //! JSON object per file.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::io::header_text::{
     block_type, compression, environment_map, level_mode, line_order, pixel_type, rounding, time,
     user_data, value_text,
@@ -215,5 +215,39 @@ fn value_json(value: &AttributeValue) -> Value {
         A::IntVec3((x, y, z)) => json!([x, y, z]),
         A::FloatVec3((x, y, z)) => json!([x, y, z]),
         A::Bytes { bytes, .. } | A::Custom { bytes, .. } => json!({"bytes": bytes.len()}),
+    }
+}
+
+/// Prints what `files` hold, as text or JSON; a file that cannot be read
+/// is named and the others are still printed.
+pub fn print(files: &[std::path::PathBuf], json: bool) -> Result<()> {
+    let describe = |path: &std::path::Path| match json {
+        true => describe_json(path).map(|v| format!("{v}\n")),
+        false => describe(path),
+    };
+    if let [file] = files {
+        print!("{}", describe(file)?);
+        return Ok(());
+    }
+    let mut failed: Vec<Error> = Vec::new();
+    for path in files {
+        match describe(path) {
+            Ok(text) => print!("{text}"),
+            Err(e) => {
+                eprintln!("exrcomp: error: {e}");
+                failed.push(e);
+            }
+        }
+    }
+    match failed.first() {
+        None => Ok(()),
+        Some(first) => Err(Error::new(
+            first.kind,
+            format!(
+                "{} of {} files could not be read",
+                failed.len(),
+                files.len()
+            ),
+        )),
     }
 }

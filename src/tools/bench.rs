@@ -2,12 +2,13 @@
 //! writing afresh into a folder of its own, with the statistics, the
 //! machine and a comparison against an earlier record (specs/bench.md).
 
+use crate::cli::command_line::{parse_command, Flow};
 use crate::cli::{BenchArgs, Size};
 use crate::error::{Error, Result};
-use crate::farm::{parse_command, Flow};
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
 use crate::io::writer::write_whole;
+use crate::tools::bench_stats::{verdict, Stats, Verdict};
 use serde_json::{json, Value};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -19,14 +20,14 @@ const SCHEMA: &str = "exrcomp-bench-1";
 
 /// A job to time: exrcomp's arguments, the one that names the output (set
 /// anew for each run) and the input patterns (for `--cold`).
-struct Job {
+struct TimedCommand {
     name: String,
     args: Vec<String>,
     output: usize,
     inputs: Vec<String>,
 }
 
-impl Job {
+impl TimedCommand {
     /// From a command (`over a.####.exr b.####.exr -o c.####.exr`) or a job
     /// file alone (`shot.toml`).
     fn new(name: String, command: &[String]) -> Result<Self> {
@@ -48,7 +49,7 @@ impl Job {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::job::load(Path::new(&inputs[0]), None)?;
+            let plan = crate::cli::job_file::load(Path::new(&inputs[0]), None)?;
             // The job file, then what it reads.
             inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
             if output.is_none() {
@@ -57,7 +58,7 @@ impl Job {
             }
         }
         let output = output.ok_or_else(|| Error::usage("the command to time names no output"))?;
-        Ok(Job {
+        Ok(TimedCommand {
             name,
             args: task.args,
             output,
@@ -201,91 +202,8 @@ fn run_once(args: &[String], threads: Option<usize>) -> Result<Run> {
     })
 }
 
-/// Median, least, most and median absolute deviation of `values`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stats {
-    pub median: f64,
-    pub min: f64,
-    pub max: f64,
-    pub mad: f64,
-}
-
-fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    match n % 2 {
-        1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-    }
-}
-
-impl Stats {
-    pub fn of(values: &[f64]) -> Self {
-        assert!(!values.is_empty(), "statistics of no runs");
-        let mut sorted = values.to_vec();
-        sorted.sort_by(f64::total_cmp);
-        let m = median(&sorted);
-        let mut deviations: Vec<f64> = sorted.iter().map(|v| (v - m).abs()).collect();
-        deviations.sort_by(f64::total_cmp);
-        Stats {
-            median: m,
-            min: sorted[0],
-            max: sorted[sorted.len() - 1],
-            mad: median(&deviations),
-        }
-    }
-
-    fn json(&self, samples: &[f64]) -> Value {
-        json!({"median": self.median, "min": self.min, "max": self.max, "mad": self.mad, "runs": samples})
-    }
-
-    fn from_json(value: &Value) -> Option<Self> {
-        let get = |k: &str| value.get(k)?.as_f64();
-        Some(Stats {
-            median: get("median")?,
-            min: get("min")?,
-            max: get("max")?,
-            mad: get("mad")?,
-        })
-    }
-}
-
-/// How a job's wall time compares with the baseline's.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// Slower by no more than the tolerance, or faster.
-    Within,
-    /// Slower beyond the tolerance, but within the two records' noise.
-    Noise,
-    /// Slower beyond the tolerance and beyond the noise.
-    Regression,
-}
-
-/// How many median absolute deviations either side of the median count as
-/// a record's noise: robust to the odd run a busy machine slows down.
-const NOISE_MADS: f64 = 2.0;
-
-impl Stats {
-    fn noise(&self) -> (f64, f64) {
-        let spread = NOISE_MADS * self.mad;
-        (self.median - spread, self.median + spread)
-    }
-}
-
-/// `now` against `before` with a tolerance (0.05 for 5%): a regression only
-/// where the median is slower beyond it and the two records' noise
-/// intervals (median ± 2 MAD) do not overlap.
-pub fn verdict(now: &Stats, before: &Stats, tolerance: f64) -> Verdict {
-    if now.median <= before.median * (1.0 + tolerance) {
-        Verdict::Within
-    } else if now.noise().0 <= before.noise().1 {
-        Verdict::Noise
-    } else {
-        Verdict::Regression
-    }
-}
-
 /// One job's record.
-fn measure(job: &Job, args: &BenchArgs, folder: &Path) -> Result<Value> {
+fn measure(job: &TimedCommand, args: &BenchArgs, folder: &Path) -> Result<Value> {
     let files = job.input_files();
     let mut runs = Vec::new();
     for k in 0..args.warmup + args.runs {
@@ -402,23 +320,13 @@ fn build() -> Value {
     })
 }
 
-/// The standard workload at `size`: plates generated once into `cache`
-/// (deterministic bytes, so every node runs the same), and the jobs.
-fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
-    let (width, height) = match size {
-        Size::Hd => (1920, 1080),
-        Size::Uhd => (3840, 2160),
-        Size::Eight => (7680, 4320),
-    };
-    // Absolute: the job file names the plates, and is read from its folder.
-    let folder = std::path::absolute(cache.join(format!("{width}x{height}-{frames}")))
-        .map_err(|e| Error::usage(format!("{}: {e}", cache.display())))?;
-    let plate = |name: &str| {
-        folder
-            .join(format!("{name}.####.exr"))
-            .to_string_lossy()
-            .into_owned()
-    };
+/// The standard workload's plates at `size`, `frames` of each, generated
+/// where `plate` names them unless their last frame is there.
+fn generate_plates(
+    plate: &dyn Fn(&str) -> String,
+    (width, height): (usize, usize),
+    frames: usize,
+) -> Result<()> {
     let range = format!("1-{frames}");
     let layers = [
         ("bg", "bg", "0,0"),
@@ -448,6 +356,12 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
         ];
         run_once(&args.map(String::from), None)?;
     }
+    Ok(())
+}
+
+/// The workload's job file (over, then blur) in `folder`, reading the
+/// plates `plate` names.
+fn write_over_blur(folder: &Path, plate: &dyn Fn(&str) -> String) -> Result<PathBuf> {
     let job_file = folder.join("over_blur.toml");
     std::fs::write(
         &job_file,
@@ -461,6 +375,29 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
         ),
     )
     .map_err(|e| Error::output(&job_file, None, format!("cannot write: {e}")))?;
+    Ok(job_file)
+}
+
+/// The standard workload at `size`: plates generated once into `cache`
+/// (deterministic bytes, so every node runs the same), and the jobs.
+fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<TimedCommand>> {
+    let (width, height) = match size {
+        Size::Hd => (1920, 1080),
+        Size::Uhd => (3840, 2160),
+        Size::Eight => (7680, 4320),
+    };
+    // Absolute: the job file names the plates, and is read from its folder.
+    let folder = std::path::absolute(cache.join(format!("{width}x{height}-{frames}")))
+        .map_err(|e| Error::usage(format!("{}: {e}", cache.display())))?;
+    let plate = |name: &str| {
+        folder
+            .join(format!("{name}.####.exr"))
+            .to_string_lossy()
+            .into_owned()
+    };
+    let range = format!("1-{frames}");
+    generate_plates(&plate, (width, height), frames)?;
+    let job_file = write_over_blur(&folder, &plate)?;
     let mut jobs: Vec<(&str, Vec<String>)> = vec![
         (
             "transcode",
@@ -529,7 +466,7 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<Job>> {
             if command[0] != "run" && !command[0].ends_with(".toml") {
                 command.extend(["--frames".into(), range.clone()]);
             }
-            Job::new(name.to_string(), &command)
+            TimedCommand::new(name.to_string(), &command)
         })
         .collect()
 }
@@ -541,7 +478,7 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
             let cache = args.cache.clone().unwrap_or_else(default_cache);
             standard(args.size, args.frames, &cache)?
         }
-        (false, false) => vec![Job::new(args.name.clone(), &args.command)?],
+        (false, false) => vec![TimedCommand::new(args.name.clone(), &args.command)?],
         (true, false) => return Err(Error::usage("give --standard or a command, not both")),
         (false, true) => {
             return Err(Error::usage(
@@ -553,7 +490,7 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     // the runs, which may take long).
     let records = [&args.json, &args.report].into_iter().flatten();
     refuse_overwriting(
-        jobs.iter().flat_map(Job::input_files),
+        jobs.iter().flat_map(TimedCommand::input_files),
         records.map(|path| (None, path.clone())),
     )?;
     let folder = std::env::temp_dir().join(format!("exrcomp-bench-{}", std::process::id()));
@@ -585,8 +522,8 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     }
     if let Some(path) = &args.report {
         let chart = match path.extension().and_then(|e| e.to_str()) {
-            Some("png") => crate::bench_chart::png(&record, baseline.as_ref()),
-            _ => crate::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
+            Some("png") => crate::tools::bench_chart::png(&record, baseline.as_ref()),
+            _ => crate::tools::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
         };
         write_whole(path, &chart)?;
     }
@@ -632,13 +569,7 @@ fn print_table(record: &Value, baseline: Option<&Value>, tolerance: f64) -> Vec<
     for job in record["jobs"].as_array().into_iter().flatten() {
         let name = job["name"].as_str().unwrap_or("?");
         let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
-        let before = baseline
-            .and_then(|b| {
-                b["jobs"]
-                    .as_array()?
-                    .iter()
-                    .find(|j| j["name"] == job["name"])
-            })
+        let before = crate::tools::bench_stats::same_job(baseline, job)
             .and_then(|j| Stats::from_json(&j["wall_seconds"]));
         let comparison = match before {
             None => String::new(),

@@ -75,6 +75,19 @@ pub fn lit(c: char, x: usize, y: usize) -> bool {
         .is_some_and(|&b| b == b'#')
 }
 
+/// The lit pixels of `text` drawn at `scale` (each font pixel a square of
+/// that side), from its top left; the one way the chart and the contact
+/// sheet draw text.
+pub fn pixels(text: &str, scale: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
+    text.chars().enumerate().flat_map(move |(n, c)| {
+        (0..HEIGHT * scale).flat_map(move |y| {
+            (0..WIDTH * scale)
+                .filter(move |&x| lit(c, x / scale, y / scale))
+                .map(move |x| (n * ADVANCE * scale + x, y))
+        })
+    })
+}
+
 /// Width in pixels of `text` at scale 1.
 pub fn text_width(text: &str) -> usize {
     (text.chars().count() * ADVANCE).saturating_sub(1)

@@ -2,19 +2,13 @@
 //! nodes, checked with errors that name the file's line, then built into one
 //! streaming `Graph`. The format: specs/job-format.md.
 
-use crate::cli::parse_tile;
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
-use crate::io::attributes::{parse_attrib, parse_erase, parse_fps, Attrib};
-use crate::io::burn_in::Corner;
-use crate::io::media::{Bits, Transfer};
 use crate::io::sequence::{split_time, InputTime};
-use crate::io::timecode::{parse_spec, TimecodeSpec};
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
-use clap::ValueEnum;
-use exr::math::Vec2;
-use exr::meta::attribute::Rational;
+use crate::run::settings::{RunArgs, WriteArgs};
+use clap::{Args as _, FromArgMatches as _};
 use serde::Deserialize;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
@@ -22,7 +16,7 @@ use toml::{Spanned, Value};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct JobFile {
+struct JobToml {
     /// Frames, as `--frames` takes them; `--frames` wins.
     frames: Option<String>,
     #[serde(default)]
@@ -35,27 +29,10 @@ type Table = BTreeMap<Spanned<String>, Spanned<Value>>;
 /// The keys every node or kind of node takes besides an operation's own.
 const NODE_KEYS: &[&str] = &["name", "inputs"];
 const READ_KEYS: &[&str] = &["read", "part", "offset", "hold"];
-const WRITE_KEYS: &[&str] = &[
-    "write",
-    "compression",
-    "tile",
-    "scanline",
-    "all_parts",
-    "attrib",
-    "erase_attrib",
-    "timecode",
-    "fps",
-    "quality",
-    "bits",
-    "transfer",
-    "burn_in",
-    "burn_in_corner",
-    "slate",
-];
 const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
 
 /// A job file turned into what the engine runs.
-pub struct JobPlan {
+pub struct JobFileContents {
     /// Per read node, in graph order: the file pattern (with its `offset`
     /// or `hold` as `@TIME`) and the part asked for.
     pub reads: Vec<(String, Option<String>)>,
@@ -63,31 +40,10 @@ pub struct JobPlan {
     /// The read whose header the output keeps (following B inputs down).
     pub header_from: usize,
     pub output: String,
-    pub compression: Option<String>,
-    /// The write node's `all_parts`: the graph on every part of its read.
-    pub all_parts: bool,
-    /// The write node's tile size (`--tile` wins).
-    pub tile: Option<Vec2<usize>>,
-    /// The write node's `scanline = true` (`--tile` wins).
-    pub scanline: bool,
+    /// The job's frames, as `--frames` takes them (`--frames` wins).
     pub frames: Option<String>,
-    /// The write node's `attrib`, `erase_attrib`, `timecode` and `fps`, as
-    /// the options of those names take them (the command line's win, or
-    /// for the lists come after).
-    pub attribs: Vec<Attrib>,
-    pub erase_attribs: Vec<String>,
-    pub timecode: Option<TimecodeSpec>,
-    pub fps: Option<Rational>,
-    /// The write node's review media keys, as the options of those names
-    /// (`quality`, `bits`, `transfer`, `burn_in`, `burn_in_corner`; the
-    /// command line's win).
-    pub quality: Option<u8>,
-    pub bits: Option<Bits>,
-    pub transfer: Option<Transfer>,
-    pub burn_in: Option<String>,
-    pub burn_in_corner: Option<Corner>,
-    /// The write node's `slate = true`.
-    pub slate: bool,
+    /// The write node's keys, as the options of those names take them.
+    pub write: WriteArgs,
 }
 
 /// A file name in the job as a path: relative ones are relative to the job
@@ -137,7 +93,7 @@ impl<'a> Source<'a> {
 
 /// The job file at `path`, its operations' lengths in pixels scaled by
 /// `proxy` when it is given.
-pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobPlan> {
+pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobFileContents> {
     let text = crate::io::reader::open_regular(path)
         .and_then(std::io::read_to_string)
         .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
@@ -145,7 +101,7 @@ pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobPlan> {
         proxy,
         ..Source::new(path, &text)
     };
-    let file: JobFile = toml::from_str(&text).map_err(|e| {
+    let file: JobToml = toml::from_str(&text).map_err(|e| {
         let line = e.span().map(|s| at.line(s.start)).unwrap_or(0);
         Error::usage(format!("{}:{line}: {}", path.display(), e.message()))
     })?;
@@ -238,10 +194,14 @@ impl<'a> Node<'a> {
 
     /// Every key is one this kind of node takes.
     fn check_keys(&self, at: &Source) -> Result<()> {
+        let write_keys = WriteArgs::keys();
         let mut allowed: Vec<&str> = NODE_KEYS.to_vec();
         match self.kind {
             Kind::Read(_) => allowed.extend(READ_KEYS),
-            Kind::Write(_) => allowed.extend(WRITE_KEYS),
+            Kind::Write(_) => {
+                allowed.push("write");
+                allowed.extend(write_keys.iter().map(String::as_str));
+            }
             Kind::Op(op) => {
                 allowed.push("op");
                 allowed.extend(op.params.iter().map(|p| p.name));
@@ -393,7 +353,9 @@ fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan> {
+/// The job's one write node and each node's inputs by index, every name
+/// checked.
+fn links(at: &Source, nodes: &[Node]) -> Result<(usize, Vec<Vec<usize>>)> {
     let mut by_name: HashMap<&str, usize> = HashMap::new();
     for (i, node) in nodes.iter().enumerate() {
         if by_name.insert(&node.name, i).is_some() {
@@ -441,6 +403,12 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
         }
         inputs.push(list);
     }
+
+    Ok((write, inputs))
+}
+
+fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobFileContents> {
+    let (write, inputs) = links(at, nodes)?;
 
     // Every operation checked (parameters, input count) before the graph is:
     // built once on inputs of its own.
@@ -508,8 +476,7 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
     let Kind::Write(output) = &out.kind else {
         unreachable!("write is a write node")
     };
-    let text = |key: &str| out.get(key).map(|v| string(at, v)).transpose();
-    Ok(JobPlan {
+    Ok(JobFileContents {
         reads: reads
             .iter()
             .map(|&r| {
@@ -523,71 +490,65 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobPlan>
         header_from: reads.iter().position(|&r| r == source).unwrap_or(0),
         graph: graph.finish(),
         output: beside(at.path, output),
-        compression: text("compression")?,
-        all_parts: out.flag(at, "all_parts")?,
-        scanline: out.flag(at, "scanline")?,
-        tile: match out.get("tile") {
-            Some(tile) => {
-                let text = string(at, tile)?;
-                Some(parse_tile(&text).or_else(|m| at.error(tile.span(), m))?)
-            }
-            None => None,
-        },
         frames,
-        attribs: strings(at, out, "attrib")?
-            .into_iter()
-            .map(|(text, span)| parse_attrib(&text).or_else(|m| at.error(span, m)))
-            .collect::<Result<_>>()?,
-        erase_attribs: strings(at, out, "erase_attrib")?
-            .into_iter()
-            .map(|(text, span)| parse_erase(&text).or_else(|m| at.error(span, m)))
-            .collect::<Result<_>>()?,
-        timecode: match out.get("timecode") {
-            Some(v) => Some(parse_spec(&string(at, v)?).or_else(|m| at.error(v.span(), m))?),
-            None => None,
-        },
-        fps: option(at, out, "fps", parse_fps)?,
-        quality: option(at, out, "quality", |t| {
-            t.parse()
-                .ok()
-                .filter(|q| (1..=100).contains(q))
-                .ok_or_else(|| format!("quality is 1 to 100, not {t}"))
-        })?,
-        bits: option(at, out, "bits", |t| Bits::from_str(t, false))?,
-        transfer: option(at, out, "transfer", |t| Transfer::from_str(t, false))?,
-        burn_in: option(at, out, "burn_in", |t| Ok(t.to_string()))?,
-        burn_in_corner: option(at, out, "burn_in_corner", |t| Corner::from_str(t, false))?,
-        slate: out.flag(at, "slate")?,
+        write: write_settings(at, out)?,
     })
 }
 
-/// The write node's `key` as the command-line option of that name takes it.
-fn option<T>(
-    at: &Source,
-    node: &Node,
-    key: &str,
-    parse: impl Fn(&str) -> std::result::Result<T, String>,
-) -> Result<Option<T>> {
-    let Some(v) = node.get(key) else {
-        return Ok(None);
-    };
-    let text = as_text(v.get_ref()).or_else(|m| at.error(v.span(), m))?;
-    Ok(Some(parse(&text).or_else(|m| at.error(v.span(), m))?))
+/// The write node's settings: each key parsed as the command-line option
+/// of that name parses its value (src/run/settings.rs), so that the two
+/// cannot differ; an error names the key's place.
+fn write_settings(at: &Source, node: &Node) -> Result<WriteArgs> {
+    let mut words = Vec::new();
+    for (key, value) in node.keys {
+        let key = key.get_ref();
+        if key == "write" || NODE_KEYS.contains(&key.as_str()) {
+            continue;
+        }
+        let option = format!("--{}", key.replace('_', "-"));
+        let given = match value.get_ref() {
+            Value::Boolean(true) => vec![option],
+            Value::Boolean(false) => Vec::new(),
+            Value::Array(items) => items
+                .iter()
+                .map(|item| as_text(item).map(|text| format!("{option}={text}")))
+                .collect::<std::result::Result<_, _>>()
+                .or_else(|m| at.error(value.span(), m))?,
+            other => {
+                let text = as_text(other).or_else(|m| at.error(value.span(), m))?;
+                vec![format!("{option}={text}")]
+            }
+        };
+        // Each key alone first, so that its error names its place (and the
+        // key, where clap's reason does not).
+        write_matches(&given).or_else(|m| match m.contains(key.as_str()) {
+            true => at.error(value.span(), m),
+            false => at.error(value.span(), format!("{key}: {m}")),
+        })?;
+        words.extend(given);
+    }
+    let matches = write_matches(&words).or_else(|m| at.error(node.span.clone(), m))?;
+    let run = RunArgs::from_arg_matches(&matches).map_err(|e| Error::usage(e.to_string()))?;
+    Ok(run.write)
 }
 
-/// A list of strings under `key` of `node`, each with the list's place.
-fn strings(at: &Source, node: &Node, key: &str) -> Result<Vec<(String, std::ops::Range<usize>)>> {
-    let Some(list) = node.get(key) else {
-        return Ok(Vec::new());
-    };
-    match list.get_ref() {
-        Value::Array(items) if items.iter().all(Value::is_str) => Ok(items
-            .iter()
-            .filter_map(|v| v.as_str())
-            .map(|t| (t.to_string(), list.span()))
-            .collect()),
-        _ => at.error(list.span(), format!("{key} is a list of strings")),
-    }
+/// `words` parsed as the run options of a command line, or clap's reason.
+fn write_matches(words: &[String]) -> std::result::Result<clap::ArgMatches, String> {
+    RunArgs::augment_args(clap::Command::new("write").no_binary_name(true))
+        .try_get_matches_from(words)
+        .map_err(|e| {
+            use std::error::Error as _;
+            match e.source() {
+                Some(reason) => reason.to_string(),
+                None => e
+                    .to_string()
+                    .lines()
+                    .next()
+                    .unwrap_or_default()
+                    .trim_start_matches("error: ")
+                    .to_string(),
+            }
+        })
 }
 
 /// A read node's file with its `offset` or `hold` key as the `@TIME` the

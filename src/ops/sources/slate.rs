@@ -3,9 +3,10 @@
 //! source node (specs/file-format.md, "Slate").
 
 use crate::engine::graph::Op;
-use crate::engine::plan::{Job, SlateFrame};
+use crate::engine::plan::SlateFrame;
 use crate::io::burn_in::{self, attribute_text, Label};
 use crate::io::rows::{Rows, RowsMut};
+use crate::io::sequence::FramePattern;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use exr::meta::header::Header;
 use std::path::Path;
@@ -14,20 +15,27 @@ use std::path::Path;
 /// ones the user sets.
 const SHOWN: &[&str] = &["shot", "owner", "comments"];
 
-/// The slate's lines for `job`, whose first frame's output header is
-/// `header`: output, frames, inputs, timecode and fps, then attributes.
-pub fn lines(job: &Job, slate: &SlateFrame, header: &Header) -> Vec<String> {
+/// The slate's lines for a job writing `output` from `inputs`, whose first
+/// frame's output header is `header` and which sets attributes `set`:
+/// output, frames, inputs, timecode and fps, then attributes.
+pub fn lines(
+    output: &FramePattern,
+    inputs: &[FramePattern],
+    set: &[&str],
+    slate: &SlateFrame,
+    header: &Header,
+) -> Vec<String> {
     let name = |pattern: String| {
         Path::new(&pattern)
             .file_name()
             .map_or(pattern.clone(), |n| n.to_string_lossy().into_owned())
     };
     let mut lines = vec![
-        format!("OUTPUT: {}", name(job.output.display())),
+        format!("OUTPUT: {}", name(output.display())),
         format!("FRAMES: {}", slate.range),
     ];
     lines.extend(
-        job.inputs
+        inputs
             .iter()
             .map(|input| format!("INPUT: {}", name(input.display()))),
     );
@@ -36,7 +44,7 @@ pub fn lines(job: &Job, slate: &SlateFrame, header: &Header) -> Vec<String> {
     }
     let mut names: Vec<&str> = vec!["framesPerSecond"];
     names.extend(SHOWN);
-    names.extend(job.attributes.set.iter().map(|a| a.name.as_str()));
+    names.extend(set);
     let mut shown: Vec<&str> = vec!["timeCode"];
     for wanted in names {
         if shown.iter().any(|s| s.eq_ignore_ascii_case(wanted)) {

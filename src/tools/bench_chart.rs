@@ -60,13 +60,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 .into(),
     }];
     for (i, job) in jobs.iter().enumerate() {
-        let before = baseline
-            .and_then(|b| {
-                b["jobs"]
-                    .as_array()?
-                    .iter()
-                    .find(|j| j["name"] == job["name"])
-            })
+        let before = crate::tools::bench_stats::same_job(baseline, job)
             .map(runs)
             .unwrap_or_default();
         let now = runs(job);
@@ -100,7 +94,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 seconds: v,
             }));
             if !values.is_empty() {
-                let median = x(crate::bench::Stats::of(values).median);
+                let median = x(crate::tools::bench_stats::Stats::of(values).median);
                 shapes.push(Shape::Line {
                     x1: median,
                     y1: y - 8.0,
@@ -180,16 +174,9 @@ pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
         match *shape {
             Shape::Text { x, y, ref text } => {
                 // The glyphs stand on the baseline, as SVG's text does.
-                let top = y - crate::font::HEIGHT as f64;
-                for (n, c) in text.chars().enumerate() {
-                    for gy in 0..crate::font::HEIGHT {
-                        for gx in 0..crate::font::WIDTH {
-                            if crate::font::lit(c, gx, gy) {
-                                let left = x + (n * crate::font::ADVANCE + gx) as f64;
-                                set(left, top + gy as f64, INK);
-                            }
-                        }
-                    }
+                let top = y - crate::draw::font::HEIGHT as f64;
+                for (px, py) in crate::draw::font::pixels(text, 1) {
+                    set(x + px as f64, top + py as f64, INK);
                 }
             }
             Shape::Line {

@@ -2,15 +2,15 @@
 //! composite in one pass, and a contact sheet of what each step did
 //! (specs/demo.md).
 
-use crate::cli::{LayerArgs, RunArgs};
-use crate::commands::{add, input_job, plate_job, run_job, run_with_progress};
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::engine::prepass::max_over_rows;
 use crate::error::{Error, Result};
-use crate::generate::{PixelType, Plate, PlateKind};
 use crate::io::sequence::FramePattern;
+use crate::ops::sources::plate::{PixelType, Plate, PlateKind};
 use crate::ops::{defocus, diffrender, merge, vblur};
-use crate::report::{count, Summary};
+use crate::run::report::{count, Summary};
+use crate::run::settings::{LayerArgs, RunArgs};
+use crate::run::{add, input_job, plate_job, run_job, run_with_progress};
 use std::path::Path;
 
 /// The defocus's focus depth: the `Set`'s row at 47% of its height (its
@@ -114,52 +114,15 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     claim(dir, run.dry_run)?;
     let first = 1001;
     let last = first + length as i64 - 1;
-    let pattern = |name: &str| {
-        dir.join(format!("{name}.####.exr"))
-            .to_string_lossy()
-            .into_owned()
-    };
+    let pattern = |name: &str| pattern(dir, name);
     // The plates show a progress bar but no summary: the composites' are the point.
     let plates = RunArgs {
         quiet: true,
         json: false,
         ..run.clone()
     };
-    let talk = |line: String| {
-        if !run.quiet {
-            eprintln!("{line}");
-        }
-    };
-    let kinds = [
-        ("ball", PlateKind::Ball, "Z, forward.u/v"),
-        ("set", PlateKind::Set, "Z"),
-        ("object", PlateKind::Object, "Z"),
-        ("proxy", PlateKind::Proxy, "Z"),
-        ("shadowed", PlateKind::Shadowed, "Z"),
-    ];
-    for (name, kind, extra) in kinds {
-        let plate = Plate {
-            kind,
-            width,
-            height,
-            origin: (0, 0),
-            pixel_type: PixelType::Half,
-        };
-        let output = FramePattern::output(&pattern(name))?;
-        let job = plate_job(plate, output, (first..=last).collect(), &plates)?;
-        let progress = RunArgs {
-            quiet: run.quiet,
-            ..plates.clone()
-        };
-        let label = format!("writing {name}");
-        let (report, _) = run_with_progress(&job, &label, &progress, Summary::default())?;
-        report.clear();
-        talk(format!(
-            "wrote {} ({}, {width}x{height} half RGBA + {extra})",
-            pattern(name),
-            count(length, "frame")
-        ));
-    }
+    let talk = |line: String| talk(run, line);
+    write_plates(dir, first..=last, (width, height), run, &plates)?;
     let all = RunArgs {
         frames: Some(format!("{first}-{last}")),
         ..run.clone()
@@ -232,6 +195,72 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &all)?;
     run_job(&job, "demo", &all, summary)?;
 
+    write_sheet(dir, width, &shown, run)
+}
+
+/// `dir`'s sequence `name` (`name.####.exr`).
+fn pattern(dir: &Path, name: &str) -> String {
+    dir.join(format!("{name}.####.exr"))
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// A line of the demo's story, unless `--quiet`.
+fn talk(run: &RunArgs, line: String) {
+    if !run.quiet {
+        eprintln!("{line}");
+    }
+}
+
+/// The shot's plates, `frames` of `size`, each with its progress bar.
+fn write_plates(
+    dir: &Path,
+    frames: std::ops::RangeInclusive<i64>,
+    (width, height): (usize, usize),
+    run: &RunArgs,
+    plates: &RunArgs,
+) -> Result<()> {
+    let length = frames.clone().count();
+    let pattern = |name: &str| pattern(dir, name);
+    let talk = |line: String| talk(run, line);
+    let kinds = [
+        ("ball", PlateKind::Ball, "Z, forward.u/v"),
+        ("set", PlateKind::Set, "Z"),
+        ("object", PlateKind::Object, "Z"),
+        ("proxy", PlateKind::Proxy, "Z"),
+        ("shadowed", PlateKind::Shadowed, "Z"),
+    ];
+    for (name, kind, extra) in kinds {
+        let plate = Plate {
+            kind,
+            width,
+            height,
+            origin: (0, 0),
+            pixel_type: PixelType::Half,
+        };
+        let output = FramePattern::output(&pattern(name))?;
+        let job = plate_job(plate, output, frames.clone().collect(), plates)?;
+        let progress = RunArgs {
+            quiet: run.quiet,
+            ..plates.clone()
+        };
+        let label = format!("writing {name}");
+        let (report, _) = run_with_progress(&job, &label, &progress, Summary::default())?;
+        report.clear();
+        talk(format!(
+            "wrote {} ({}, {width}x{height} half RGBA + {extra})",
+            pattern(name),
+            count(length, "frame")
+        ));
+    }
+    Ok(())
+}
+
+/// The contact sheet of the `shown` frames, and what the folder holds.
+fn write_sheet(dir: &Path, width: usize, shown: &[i64], run: &RunArgs) -> Result<()> {
+    let pattern = |name: &str| pattern(dir, name);
+    let talk = |line: String| talk(run, line);
+    let listed: Vec<String> = shown.iter().map(i64::to_string).collect();
     let sheet = dir.join(SHEET);
     let rows: Vec<(String, Vec<_>)> = shown
         .iter()
@@ -244,7 +273,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
         })
         .collect::<Result<_>>()?;
     let titles: Vec<&str> = COLUMNS.iter().map(|(title, _)| *title).collect();
-    crate::contact_sheet::write(&sheet, PANEL_WIDTH.min(width), &titles, &rows)?;
+    crate::tools::contact_sheet::write(&sheet, PANEL_WIDTH.min(width), &titles, &rows)?;
     let (files, bytes) = folder_size(dir)?;
     talk(format!(
         "contact sheet: {} (columns: {}; rows: {})",

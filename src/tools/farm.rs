@@ -3,14 +3,15 @@
 //! frames it has not finished. Open Job Description templates, OpenCue
 //! outlines and Deadline job files.
 
-use crate::cli::{Cli, Farm, FarmJob};
-use crate::commands::DryRun;
+use crate::cli::command_line::{argv, parse_command, Flow, TaskCommand};
+use crate::cli::{Cli, Farm, FarmArgs};
 use crate::error::{Error, Result};
 use crate::io::overwrite::{refuse_overwriting, refuse_replacing};
 use crate::io::sequence::parse_frame_list;
 use crate::io::writer::write_whole;
-use crate::report::FarmLog;
-use clap::{CommandFactory, Parser, ValueHint};
+use crate::run::report::FarmLog;
+use crate::run::DryRun;
+use clap::Parser;
 use std::collections::BTreeMap;
 use std::path::{Component, Path, PathBuf};
 
@@ -105,7 +106,7 @@ pub fn normalise(path: &Path) -> PathBuf {
 /// this very folder, else the real one.
 pub fn logical_working_folder() -> Result<PathBuf> {
     use std::os::unix::fs::MetadataExt;
-    let real = crate::commands::working_folder()?;
+    let real = crate::run::working_folder()?;
     let same = |a: &Path, b: &Path| match (std::fs::metadata(a), std::fs::metadata(b)) {
         (Ok(a), Ok(b)) => (a.dev(), a.ino()) == (b.dev(), b.ino()),
         _ => false,
@@ -149,69 +150,6 @@ fn absolute(cwd: &Path, path: &str) -> String {
 
 /// Commands that render no frames, so no farm task can run them.
 const NOT_FRAMES: [&str; 4] = ["farm", "info", "stitch", "demo"];
-
-/// What a file argument of the command is to the farm (OpenJD's dataFlow).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Flow {
-    /// Read: an input, a job file.
-    In,
-    /// Written: `-o`.
-    Out,
-}
-
-/// The command every task runs, but for `--frames`.
-pub struct TaskCommand {
-    pub args: Vec<String>,
-    /// The arguments that are file names (absolute), by index in `args`.
-    pub files: Vec<(usize, Flow)>,
-}
-
-/// `command` parsed as exrcomp parses it: its arguments (joined values
-/// split, `--output=F` as `--output F`), the file arguments among them, the
-/// subcommand's name and its matches.
-pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::ArgMatches)> {
-    let args = split_joined_values(command);
-    let matches = crate::cli::command()
-        .try_get_matches_from(argv(&args))
-        .and_then(|m| crate::cli::refuse_not_applicable(&m).map(|()| m))
-        .map_err(|e| {
-            let message = e.to_string();
-            let first = message.lines().next().unwrap_or_default();
-            Error::usage(format!(
-                "the command to run does not parse: {}",
-                first.trim_start_matches("error: ")
-            ))
-        })?;
-    let (name, sub) = matches.subcommand().expect("a subcommand is required");
-    // A subcommand's indices count from its own name, which is args[0].
-    let definition = Cli::command();
-    let definition = definition
-        .find_subcommand(name)
-        .expect("the parsed subcommand exists");
-    let mut files = Vec::new();
-    for arg in definition.get_arguments() {
-        if arg.get_value_hint() != ValueHint::FilePath {
-            continue;
-        }
-        let flow = match arg.get_id().as_str() {
-            "output" => Flow::Out,
-            _ => Flow::In,
-        };
-        for at in sub.indices_of(arg.get_id().as_str()).into_iter().flatten() {
-            // A value clap places outside the arguments is left alone, and
-            // a config's name (`ocio://NAME`) is no file.
-            if at < args.len() && !args[at].starts_with("ocio://") {
-                files.push((at, flow));
-            }
-        }
-    }
-    files.sort_by_key(|&(at, _)| at);
-    Ok((TaskCommand { args, files }, name.to_string(), sub.clone()))
-}
-
-fn argv(args: &[String]) -> impl Iterator<Item = String> + '_ {
-    std::iter::once("exrcomp".to_string()).chain(args.iter().cloned())
-}
 
 /// What each task of a job needs of its worker.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -311,7 +249,7 @@ pub fn task_command(
         .build()
         .map_err(|e| Error::internal(format!("cannot start {threads} threads: {e}")))?;
     let mut dry = pool
-        .install(|| crate::commands::execute(cli.command))?
+        .install(|| crate::cli::commands::execute(cli.command))?
         .expect("a frame-writing command's dry run says what it found");
     // The job file and the other files the command names are read too.
     dry.reads.extend(
@@ -339,10 +277,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     let (task, needs, dry) =
         task_command(&job.command, &job.frames, cwd, (job.threads, rules.log))?;
     if !dry.others.is_empty() {
-        eprintln!(
-            "exrcomp: warning: {}",
-            crate::commands::others_made(&dry.others)
-        );
+        eprintln!("exrcomp: warning: {}", crate::run::others_made(&dry.others));
     }
     let exrcomp = this_exrcomp()?;
     let name = job
@@ -414,7 +349,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
 }
 
 /// What the job does and needs, for a render manager's view of it.
-fn description(job: &FarmJob, needs: &Needs) -> String {
+fn description(job: &FarmArgs, needs: &Needs) -> String {
     let mut text = format!(
         "exrcomp {}: frames {} in chunks of {}; each task: --threads {}, at most {} MiB",
         job.command.join(" "),
@@ -429,30 +364,6 @@ fn description(job: &FarmJob, needs: &Needs) -> String {
         text.truncate(at);
     }
     text
-}
-
-/// `--name=value` as `--name value` and `-oVALUE` as `-o VALUE`, so that
-/// every value is an argument of its own (clap's indices count them so).
-fn split_joined_values(command: &[String]) -> Vec<String> {
-    let mut args = Vec::new();
-    let mut options = true;
-    for arg in command {
-        match arg.as_str() {
-            "--" => {
-                options = false;
-                args.push(arg.clone());
-            }
-            a if options && a.starts_with("--") && a.contains('=') => {
-                let (name, value) = a.split_once('=').expect("has =");
-                args.extend([name.to_string(), value.to_string()]);
-            }
-            a if options && a.starts_with("-o") && a.len() > 2 => {
-                args.extend(["-o".to_string(), a[2..].to_string()]);
-            }
-            _ => args.push(arg.clone()),
-        }
-    }
-    args
 }
 
 /// JSON quoting is valid YAML quoting: every string goes out quoted.
@@ -569,7 +480,7 @@ impl Tasks {
 
 /// An Open Job Description job (specification 2023-09): its template and
 /// the values of its job parameters.
-pub struct OpenJdJob {
+pub struct OpenJdArgs {
     pub template: String,
     /// `{"NAME": "VALUE"}`, as `openjd run -p file://FILE` and render
     /// managers take job parameters.
@@ -595,7 +506,7 @@ pub fn openjd_template(
     tasks: &Tasks,
     needs: &Needs,
     (name, description): (&str, String),
-) -> OpenJdJob {
+) -> OpenJdArgs {
     let command = &task.args;
     let mut parameters = Vec::new();
     let mut values = serde_json::Map::new();
@@ -696,7 +607,7 @@ pub fn openjd_template(
         )
         .collect();
     let values = serde_json::to_string_pretty(&values).expect("JSON values serialise") + "\n";
-    OpenJdJob {
+    OpenJdArgs {
         template,
         values,
         bundle_values,
@@ -782,7 +693,7 @@ fn shell_quote(arg: &str) -> String {
 pub fn opencue_outline(
     exrcomp: &Path,
     command: &[String],
-    (job, service): (&FarmJob, &str),
+    (job, service): (&FarmArgs, &str),
     (name, needs): (&str, &Needs),
 ) -> Result<String> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "OpenCue")?;
@@ -819,7 +730,7 @@ pub fn opencue_outline(
 }
 
 /// A Deadline job: its job-info and plugin-info files.
-pub struct DeadlineJob {
+pub struct DeadlineArgs {
     pub job_info: String,
     pub plugin_info: String,
 }
@@ -835,10 +746,10 @@ pub struct DeadlineJob {
 pub fn deadline_job(
     exrcomp: &Path,
     task: &TaskCommand,
-    job: &FarmJob,
+    job: &FarmArgs,
     needs: &Needs,
     (name, description): (&str, String),
-) -> Result<DeadlineJob> {
+) -> Result<DeadlineArgs> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
     // Key=value lines: a value holds no line break; the CommandLine plugin
     // splits Arguments at spaces outside double quotes.
@@ -911,7 +822,7 @@ pub fn deadline_job(
         ("Shell".to_string(), "default".to_string()),
         ("ShellExecute".to_string(), "False".to_string()),
     ];
-    Ok(DeadlineJob {
+    Ok(DeadlineArgs {
         job_info: lines(&info),
         plugin_info: lines(&plugin),
     })

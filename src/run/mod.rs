@@ -1,6 +1,13 @@
-//! Each subcommand as a job: resolve frames, check inputs, run, report.
+//! The run layer, between the front ends (src/cli/, src/tools/) and the
+//! engine: engine jobs made from inputs, a graph and the run settings
+//! (src/run/settings.rs), their frames resolved and inputs checked, then
+//! run with their progress and summary (src/run/report.rs).
 
-use crate::cli::{Command, Invocation, LayerArgs, RunArgs};
+pub mod report;
+pub mod settings;
+
+use settings::{LayerArgs, RunArgs};
+
 use crate::engine::fingerprint;
 use crate::engine::frame_plan::{plan_parts, FramePlan};
 use crate::engine::graph::NodeId;
@@ -15,8 +22,6 @@ use crate::engine::plan::{
 };
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
-use crate::farm;
-use crate::generate::Plate;
 use crate::io::attributes::Edits;
 use crate::io::burn_in::BurnIn;
 use crate::io::media::{Format, Media};
@@ -31,18 +36,15 @@ use crate::io::writer::remove_stale_temporaries;
 use crate::ops::declare::{Args, Operation};
 use crate::ops::layers::Selection;
 use crate::ops::resize::{passes, Filter, Target};
+use crate::ops::sources::plate::Plate;
+use crate::ops::sources::slate::Slate;
 use crate::params::DEFAULT_DWA_LEVEL;
-use crate::report::{count, FarmLog, Outcome, Report, Summary};
-use crate::slate::Slate;
+use crate::run::report::{count, FarmLog, Outcome, Report, Summary};
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-
-pub fn run(command: Command) -> Result<()> {
-    execute(command).map(drop)
-}
 
 /// What a dry run of a frame-writing command found.
 pub struct DryRun {
@@ -56,190 +58,8 @@ pub struct DryRun {
     pub others: Vec<PathBuf>,
 }
 
-/// Runs `command`; a dry run of a frame-writing command gives what it found.
-pub fn execute(command: Command) -> Result<Option<DryRun>> {
-    match command {
-        Command::Op(call) => operation(call),
-        Command::Stitch { bands, output } => {
-            let pattern = FramePattern::output(&output.to_string_lossy())?;
-            if pattern.format() != Some(Format::Exr) {
-                return Err(Error::usage(format!(
-                    "stitch writes EXR files (it joins their chunks): {} is not one",
-                    output.display()
-                )));
-            }
-            refuse_overwriting(bands.clone(), [(None, output.clone())])?;
-            crate::io::stitch::stitch(&bands, &output).map(|()| None)
-        }
-        Command::Farm { farm } => {
-            farm::write_job(&farm, &farm::logical_working_folder()?).map(|()| None)
-        }
-        Command::Run { job, output, run } => {
-            let mut plan = crate::job::load(&job, run.proxy_scale)?;
-            if let Some(output) = output {
-                plan.output = output;
-            }
-            let run = RunArgs {
-                frames: run.frames.clone().or(plan.frames),
-                compression: run.compression.clone().or(plan.compression),
-                all_parts: run.all_parts || plan.all_parts,
-                tile: run.tile.or(plan.tile),
-                scanline: run.scanline || (run.tile.is_none() && plan.scanline),
-                attribs: plan.attribs.into_iter().chain(run.attribs).collect(),
-                erase_attribs: plan
-                    .erase_attribs
-                    .into_iter()
-                    .chain(run.erase_attribs)
-                    .collect(),
-                timecode: run.timecode.or(plan.timecode),
-                fps: run.fps.or(plan.fps),
-                quality: run.quality.or(plan.quality),
-                bits: run.bits.or(plan.bits),
-                transfer: run.transfer.or(plan.transfer),
-                burn_in: run.burn_in.clone().or(plan.burn_in),
-                burn_in_corner: run.burn_in_corner.or(plan.burn_in_corner),
-                slate: run.slate || plan.slate,
-                ..run
-            };
-            let (texts, parts): (Vec<String>, Vec<Option<String>>) = plan.reads.into_iter().unzip();
-            let (mut job, summary) = input_job(
-                &texts,
-                &plan.output,
-                plan.graph,
-                plan.header_from,
-                &LayerArgs::default(),
-                &run,
-            )?;
-            // A read's own `part` key, where its file name has no `:PART`.
-            for (asked, part) in job.parts.iter_mut().zip(parts) {
-                if asked.is_none() {
-                    *asked = part;
-                }
-            }
-            run_job(&job, "run", &run, summary)
-        }
-        Command::Flatten {
-            input,
-            output,
-            part,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs {
-                part,
-                ..LayerArgs::default()
-            };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "flatten", &run, summary)
-        }
-        Command::Deepmerge {
-            inputs,
-            output,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs::default();
-            let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
-            job.merged[0] = inputs[1..]
-                .iter()
-                .map(|p| FramePattern::parse(p))
-                .collect::<Result<_>>()?;
-            run_job(&job, "deepmerge", &run, summary)
-        }
-        Command::Transcode {
-            input,
-            output,
-            level,
-            part,
-            run,
-        } => {
-            let graph = Graph::identity();
-            let layers = LayerArgs {
-                level,
-                part,
-                ..LayerArgs::default()
-            };
-            let (job, summary) = input_job(&[input], &output, graph, 0, &layers, &run)?;
-            run_job(&job, "transcode", &run, summary)
-        }
-        Command::Info { files, json } => info(&files, json).map(|()| None),
-        Command::Bench(args) => crate::bench::bench(&args).map(|()| None),
-        Command::Demo {
-            dir,
-            length,
-            width,
-            height,
-            run,
-        } => crate::demo::demo(&dir, length, width, height, &run).map(|()| None),
-        Command::Generate {
-            output,
-            kind,
-            width,
-            height,
-            origin,
-            pixel_type,
-            run,
-        } => {
-            let plate = Plate {
-                kind,
-                width,
-                height,
-                origin,
-                pixel_type,
-            };
-            let output = FramePattern::output(&output)?;
-            let frames = frame_list(&run)?.unwrap_or(vec![1]);
-            check_frame_count(&frames, &output)?;
-            if run.proxy_scale.is_some() {
-                return Err(Error::usage(
-                    "generate writes plates at their size: --proxy-scale is for commands that read inputs",
-                ));
-            }
-            let job = plate_job(plate, output, frames, &run)?;
-            run_job(&job, "generate", &run, Summary::default())
-        }
-    }
-}
-
-fn selection(layers: &LayerArgs) -> Selection {
-    Selection {
-        layers: layers.layers.clone(),
-        all: layers.all_layers,
-        view: layers.view.clone(),
-    }
-}
-
-/// An operation's job: its graph built from its declaration, after a first
-/// pass over the inputs for what it measures (none in a dry run).
-fn operation(call: Invocation) -> Result<Option<DryRun>> {
-    let op = call.op;
-    let mut args = Args {
-        op: op.name,
-        values: call.values,
-        layers: selection(&call.layers),
-        straight: call.straight,
-        job_file: false,
-    };
-    let header = op.header.unwrap_or(call.inputs.len() - 1);
-    let job = |inputs: &[String], graph, header| {
-        input_job(inputs, &call.output, graph, header, &call.layers, &call.run)
-    };
-    if let (Some(measure), false) = (op.measure, call.run.dry_run) {
-        let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
-        args.values.extend(measure(&args, &first)?);
-    }
-    if let Some(factor) = call.run.proxy_scale {
-        op.scale_lengths(&mut args, factor as f64)
-            .map_err(|m| Error::usage(format!("--proxy-scale: {m}")))?;
-    }
-    let (mut graph, inputs) = GraphBuilder::with_inputs(call.inputs.len());
-    (op.build)(&args, &mut graph, &inputs).map_err(Error::usage)?;
-    let (job, summary) = job(&call.inputs, graph.finish(), header)?;
-    run_job(&job, op.name, &call.run, summary)
-}
-
 /// Operation `op` with parameters `values` (as typed) on `inputs`.
-pub(crate) fn add(
+pub fn add(
     graph: &mut GraphBuilder,
     op: &'static Operation,
     values: &[(&'static str, &str)],
@@ -260,7 +80,7 @@ pub fn working_folder() -> Result<PathBuf> {
 }
 
 /// The frames `--frames` names, cut to the chunk `--chunk-from` names.
-fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
+pub fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
     let Some(text) = &run.frames else {
         return match run.chunk_from {
             Some(_) => Err(Error::usage(
@@ -278,7 +98,7 @@ fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
 
 /// A job over input sequences (`file.exr:PART` picks a part); the header
 /// comes from input `header_from`.
-pub(crate) fn input_job(
+pub fn input_job(
     texts: &[String],
     output: &str,
     graph: Graph,
@@ -318,7 +138,7 @@ pub(crate) fn input_job(
     // that each chunk of a farm job counts its timecode from the same first
     // frame, and only the chunk starting there writes the slate.
     let shot = match &run.frames {
-        Some(_) if attributes.needs_anchor() || run.slate => default_frames(&inputs, &times)?,
+        Some(_) if attributes.needs_anchor() || run.write.slate => default_frames(&inputs, &times)?,
         _ => frames.clone(),
     };
     if attributes.needs_anchor() {
@@ -326,7 +146,7 @@ pub(crate) fn input_job(
     }
     check_frame_count(&frames, &output)?;
     let slate = slate_frame(run, &output, &frames, &shot)?;
-    if run.all_parts {
+    if run.write.all_parts {
         check_all_parts(texts, &parts, layers)?;
     }
     let media = review(&output, run)?;
@@ -335,34 +155,28 @@ pub(crate) fn input_job(
         &inputs,
         &parts,
         layers,
-        run.all_parts,
+        run.write.all_parts,
         &graph,
         &resolved.frames,
     );
     let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
-    let job = Job {
+    let reads = Job {
         merged: vec![Vec::new(); inputs.len()],
         inputs,
         times,
         parts,
         view: layers.view.clone(),
         level: layers.level,
-        output,
-        frames: resolved.frames,
-        graph,
+        ..engine_job(
+            output,
+            resolved.frames,
+            graph,
+            HeaderBase::Input(header_from),
+        )
+    };
+    let job = Job {
         compression: parse_compression(run)?,
-        header_base: HeaderBase::Input(header_from),
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
-        max_output_pixels: run.max_output_pixels,
-        all_parts: run.all_parts,
-        attributes,
-        media,
-        slate,
+        ..written_as(reads, run, attributes, media, slate)
     };
     let summary = Summary {
         warnings: crate::engine::assumptions::warnings(&job, texts),
@@ -433,7 +247,7 @@ fn luminance_inputs(
         .collect()
 }
 
-fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
+pub fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     if frames.len() > 1 && !output.is_sequence() {
         return Err(Error::usage(format!(
             "{} frames but the output {} has no frame number (use #### or %04d)",
@@ -444,7 +258,7 @@ fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
     Ok(())
 }
 
-pub(crate) fn plate_job(
+pub fn plate_job(
     plate: Plate,
     output: FramePattern,
     frames: Vec<i64>,
@@ -456,19 +270,8 @@ pub(crate) fn plate_job(
     attributes.anchor(frames[0]);
     let slate = slate_frame(run, &output, &frames, &frames)?;
     let compression = parse_compression(run)?.unwrap_or(Compression::ZIP16);
-    Ok(Job {
-        blocks: run.blocks(),
-        strip_rows: run.strip_rows,
-        zip_level: run.zip_level,
-        resume: run.resume,
-        keep_going: run.keep_going,
-        rows: run.rows,
-        max_output_pixels: run.max_output_pixels,
-        attributes,
-        media,
-        slate,
-        ..sourced_job(plate, display, output, frames, compression)
-    })
+    let job = sourced_job(plate, display, output, frames, compression);
+    Ok(written_as(job, run, attributes, media, slate))
 }
 
 /// A job of no inputs: `source` (an op of none) over `display` for
@@ -483,6 +286,27 @@ fn sourced_job(
 ) -> Job {
     let mut graph = GraphBuilder::default();
     graph.add(source, &[]);
+    let frames = frames
+        .into_iter()
+        .map(|frame| FrameSources {
+            frame,
+            inputs: Vec::new(),
+        })
+        .collect();
+    Job {
+        compression: Some(compression),
+        ..engine_job(output, frames, graph.finish(), HeaderBase::New(display))
+    }
+}
+
+/// The one engine job literal: `graph` over `frames` into `output`, reading
+/// nothing yet, written as a run without options writes.
+fn engine_job(
+    output: FramePattern,
+    frames: Vec<FrameSources>,
+    graph: Graph,
+    header_base: HeaderBase,
+) -> Job {
     Job {
         inputs: Vec::new(),
         times: Vec::new(),
@@ -491,16 +315,10 @@ fn sourced_job(
         view: None,
         level: None,
         output,
-        frames: frames
-            .into_iter()
-            .map(|frame| FrameSources {
-                frame,
-                inputs: Vec::new(),
-            })
-            .collect(),
-        graph: graph.finish(),
-        compression: Some(compression),
-        header_base: HeaderBase::New(display),
+        frames,
+        graph,
+        compression: None,
+        header_base,
         blocks: OutputBlocks::FollowInput,
         strip_rows: None,
         zip_level: crate::io::deflate::DEFAULT_LEVEL,
@@ -515,6 +333,31 @@ fn sourced_job(
     }
 }
 
+/// `job` written as `run` says, with its attribute edits, review media and
+/// slate.
+fn written_as(
+    job: Job,
+    run: &RunArgs,
+    attributes: Edits,
+    media: Option<Review>,
+    slate: Option<SlateFrame>,
+) -> Job {
+    Job {
+        blocks: run.blocks(),
+        strip_rows: run.strip_rows,
+        zip_level: run.zip_level,
+        resume: run.resume,
+        keep_going: run.keep_going,
+        rows: run.rows,
+        max_output_pixels: run.max_output_pixels,
+        all_parts: run.write.all_parts,
+        attributes,
+        media,
+        slate,
+        ..job
+    }
+}
+
 /// The slate `run` writes, if it asks for one and starts at the shot's first
 /// frame: numbered one before it, introducing `shot`'s frames. Its number
 /// must be a file of its own: the output a sequence, not one of its frames.
@@ -524,7 +367,7 @@ fn slate_frame(
     frames: &[i64],
     shot: &[i64],
 ) -> Result<Option<SlateFrame>> {
-    if !run.slate || frames[0] != shot[0] {
+    if !run.write.slate || frames[0] != shot[0] {
         return Ok(None);
     }
     let frame = shot[0] - 1;
@@ -548,7 +391,8 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
     let plans = plan_parts(job, &job.frames[0])?;
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
-    let lines = crate::slate::lines(job, slate, header);
+    let set: Vec<&str> = job.attributes.set.iter().map(|a| a.name.as_str()).collect();
+    let lines = crate::ops::sources::slate::lines(&job.output, &job.inputs, &set, slate, header);
     let source = Slate::new(display, &lines);
     let (output, frames) = (job.output.clone(), vec![slate.frame]);
     Ok(Some(Job {
@@ -572,11 +416,11 @@ fn slate_job(job: &Job) -> Result<Option<Job>> {
 fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
     let format = output.format().unwrap_or(Format::Exr);
     let given: Vec<&str> = [
-        ("--quality", run.quality.is_some()),
-        ("--bits", run.bits.is_some()),
-        ("--transfer", run.transfer.is_some()),
-        ("--burn-in", run.burn_in.is_some()),
-        ("--burn-in-corner", run.burn_in_corner.is_some()),
+        ("--quality", run.write.quality.is_some()),
+        ("--bits", run.write.bits.is_some()),
+        ("--transfer", run.write.transfer.is_some()),
+        ("--burn-in", run.write.burn_in.is_some()),
+        ("--burn-in-corner", run.write.burn_in_corner.is_some()),
     ]
     .into_iter()
     .filter_map(|(name, given)| given.then_some(name))
@@ -591,11 +435,11 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         };
     }
     let exr_only = [
-        ("--compression", run.compression.is_some()),
+        ("--compression", run.write.compression.is_some()),
         ("--dwa-level", run.dwa_level.is_some()),
-        ("--tile", run.tile.is_some()),
+        ("--tile", run.write.tile.is_some()),
         ("--rows", run.rows.is_some()),
-        ("--all-parts", run.all_parts),
+        ("--all-parts", run.write.all_parts),
     ];
     if let Some((name, _)) = exr_only.iter().find(|(_, given)| *given) {
         return Err(Error::usage(format!(
@@ -603,12 +447,18 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
             output.display()
         )));
     }
-    let media = Media::new(format, run.bits, run.quality, run.transfer)
-        .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
+    let media = Media::new(
+        format,
+        run.write.bits,
+        run.write.quality,
+        run.write.transfer,
+    )
+    .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
     let burn_in = run
+        .write
         .burn_in
         .as_deref()
-        .map(|text| BurnIn::parse(text, run.burn_in_corner.unwrap_or_default()))
+        .map(|text| BurnIn::parse(text, run.write.burn_in_corner.unwrap_or_default()))
         .transpose()
         .map_err(Error::usage)?;
     Ok(Some(Review { media, burn_in }))
@@ -617,36 +467,17 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
 /// The attribute edits `run` asks for.
 fn edits(run: &RunArgs) -> Result<Edits> {
     Edits::new(
-        run.erase_attribs.clone(),
-        run.attribs.clone(),
-        run.fps,
-        run.timecode,
+        run.write.erase_attribs.clone(),
+        run.write.attribs.clone(),
+        run.write.fps,
+        run.write.timecode,
     )
     .map_err(Error::usage)
 }
 
 fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
-    let dwa_level = Some(run.dwa_level.unwrap_or(DEFAULT_DWA_LEVEL));
-    let compression = match run.compression.as_deref().map(str::to_ascii_lowercase) {
-        None => None,
-        Some(name) => Some(match name.as_str() {
-            "none" => Compression::Uncompressed,
-            "rle" => Compression::RLE,
-            "zips" => Compression::ZIP1,
-            "zip" => Compression::ZIP16,
-            "piz" => Compression::PIZ,
-            "pxr24" => Compression::PXR24,
-            "b44" => Compression::B44,
-            "b44a" => Compression::B44A,
-            "dwaa" => Compression::DWAA(dwa_level),
-            "dwab" => Compression::DWAB(dwa_level),
-            other => {
-                return Err(Error::usage(format!(
-                    "unknown compression '{other}' (none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab)"
-                )))
-            }
-        }),
-    };
+    let dwa_level = run.dwa_level.unwrap_or(DEFAULT_DWA_LEVEL);
+    let compression = run.write.compression.map(|c| c.compression(dwa_level));
     let dwa = matches!(
         compression,
         Some(Compression::DWAA(_) | Compression::DWAB(_))
@@ -662,12 +493,7 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 /// Runs `job`, prints its summary, and turns failed frames or an
 /// interruption into the run's error (and exit code). A dry run plans every
 /// frame and gives what it found.
-pub(crate) fn run_job(
-    job: &Job,
-    label: &str,
-    run: &RunArgs,
-    summary: Summary,
-) -> Result<Option<DryRun>> {
+pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Option<DryRun>> {
     let slate = slate_job(job)?;
     let (reads, mut writes) = job.files();
     writes.extend(slate.iter().flat_map(|slate| slate.files().1));
@@ -879,7 +705,7 @@ fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
     })
 }
 
-pub(crate) fn run_with_progress(
+pub fn run_with_progress(
     job: &Job,
     label: &str,
     run: &RunArgs,
@@ -1002,37 +828,5 @@ impl Events for Progress<'_> {
         summary.failed.push((frame, error.clone()));
         drop(summary);
         self.report(frame, Outcome::Failed);
-    }
-}
-
-fn info(files: &[std::path::PathBuf], json: bool) -> Result<()> {
-    let describe = |path: &std::path::Path| match json {
-        true => crate::info::describe_json(path).map(|v| format!("{v}\n")),
-        false => crate::info::describe(path),
-    };
-    if let [file] = files {
-        print!("{}", describe(file)?);
-        return Ok(());
-    }
-    let mut failed: Vec<Error> = Vec::new();
-    for path in files {
-        match describe(path) {
-            Ok(text) => print!("{text}"),
-            Err(e) => {
-                eprintln!("exrcomp: error: {e}");
-                failed.push(e);
-            }
-        }
-    }
-    match failed.first() {
-        None => Ok(()),
-        Some(first) => Err(Error::new(
-            first.kind,
-            format!(
-                "{} of {} files could not be read",
-                failed.len(),
-                files.len()
-            ),
-        )),
     }
 }

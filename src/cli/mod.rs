@@ -1,8 +1,12 @@
 //! The command line: the operations' subcommands made from their
 //! declarations (src/ops/declare.rs), the other commands declared here.
 
+pub mod command_line;
+pub mod commands;
+pub mod job_file;
+
 use crate::ops::declare::Operation;
-use crate::params::*;
+use crate::run::settings::{parse_level, CompressionName, LayerArgs, PartArgs, RunArgs};
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -158,7 +162,7 @@ pub enum Command {
         output: String,
         /// What the plate shows.
         #[arg(long, value_enum, default_value = "bg")]
-        kind: crate::generate::PlateKind,
+        kind: crate::ops::sources::plate::PlateKind,
         /// Width in pixels.
         #[arg(long, default_value_t = 1920, allow_negative_numbers = true)]
         width: usize,
@@ -170,7 +174,7 @@ pub enum Command {
         origin: (i32, i32),
         /// Sample type of the colour channels.
         #[arg(long, value_enum, default_value = "half")]
-        pixel_type: crate::generate::PixelType,
+        pixel_type: crate::ops::sources::plate::PixelType,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -245,7 +249,7 @@ pub enum Size {
     Eight,
 }
 
-value_enum!(crate::report::FarmLog {
+value_enum!(crate::run::report::FarmLog {
     Frames => "frames": "a line per frame: written or kept",
     Openjd => "openjd": "those and openjd_progress: / openjd_status: lines",
     Deadline => "deadline": "those and Progress: N% lines",
@@ -261,17 +265,17 @@ value_enum!(Size {
 pub enum Farm {
     /// An Open Job Description job template (`openjd check`, `openjd run`,
     /// AWS Deadline Cloud): one task per chunk, each `--frames CHUNK --resume`.
-    Openjd(OpenJdJob),
+    Openjd(OpenJdArgs),
     /// An OpenCue outline (JSON, as PyOutline loads it) with one chunked
     /// layer (frames A-B or A-B:STEP); see the README for submitting it.
-    Opencue(OpenCueJob),
+    Opencue(OpenCueArgs),
     /// Deadline 10 job-info and plugin-info files for the CommandLine
     /// plugin (`deadlinecommand JOBINFO PLUGININFO`): frames A-B or A-B:STEP.
-    Deadline(DeadlineJob),
+    Deadline(DeadlineArgs),
 }
 
 impl Farm {
-    pub fn job(&self) -> &FarmJob {
+    pub fn job(&self) -> &FarmArgs {
         match self {
             Farm::Openjd(farm) => &farm.job,
             Farm::Opencue(farm) => &farm.job,
@@ -279,7 +283,7 @@ impl Farm {
         }
     }
 
-    pub fn job_mut(&mut self) -> &mut FarmJob {
+    pub fn job_mut(&mut self) -> &mut FarmArgs {
         match self {
             Farm::Openjd(farm) => &mut farm.job,
             Farm::Opencue(farm) => &mut farm.job,
@@ -291,7 +295,7 @@ impl Farm {
 /// A local command to run on a farm, in frame chunks: what every farm takes.
 /// (An option of one farm only is declared with it, so another refuses it.)
 #[derive(Args)]
-pub struct FarmJob {
+pub struct FarmArgs {
     /// All the frames, as --frames takes them.
     #[arg(long, allow_hyphen_values = true)]
     pub frames: String,
@@ -315,9 +319,9 @@ pub struct FarmJob {
 
 /// `exrcomp farm openjd`: the options every farm takes and OpenJD's own.
 #[derive(Args)]
-pub struct OpenJdJob {
+pub struct OpenJdArgs {
     #[command(flatten)]
-    pub job: FarmJob,
+    pub job: FarmArgs,
     /// Let the scheduler chunk the frames (a CHUNK[INT] task parameter, the
     /// TASK_CHUNKING extension) instead of listing the chunks.
     #[arg(long)]
@@ -335,9 +339,9 @@ pub struct OpenJdJob {
 
 /// `exrcomp farm opencue`: the options every farm takes and OpenCue's own.
 #[derive(Args)]
-pub struct OpenCueJob {
+pub struct OpenCueArgs {
     #[command(flatten)]
-    pub job: FarmJob,
+    pub job: FarmArgs,
     /// The layer's service.
     #[arg(long, default_value = "shell")]
     pub service: String,
@@ -345,218 +349,9 @@ pub struct OpenCueJob {
 
 /// `exrcomp farm deadline`: the options every farm takes.
 #[derive(Args)]
-pub struct DeadlineJob {
+pub struct DeadlineArgs {
     #[command(flatten)]
-    pub job: FarmJob,
-}
-
-/// Which layers, views and parts an operation works on.
-#[derive(Args, Clone, Default)]
-#[command(next_help_heading = "Layers, views and parts")]
-pub struct LayerArgs {
-    /// Layer to work on (`diffuse` for diffuse.R, G, B, A); repeatable.
-    /// Default: the unnamed layer (R, G, B, A).
-    #[arg(long = "layer")]
-    pub layers: Vec<String>,
-    /// Every layer with colour channels in all inputs.
-    #[arg(long, conflicts_with_all = ["layers", "view"])]
-    pub all_layers: bool,
-    /// View of a stereo file: the part with this `view`, or in a single-part
-    /// multi-view file the channels `VIEW.R` (`layer.VIEW.R`).
-    #[arg(long)]
-    pub view: Option<String>,
-    #[command(flatten)]
-    pub part: PartArgs,
-    /// Level of mipmapped inputs (N), or ripmapped ones (X,Y; N is N,N) to
-    /// read instead of the full resolution (level 0).
-    #[arg(long, value_parser = parse_level)]
-    pub level: Option<exr::math::Vec2<usize>>,
-}
-
-/// The part of a multi-part input: every command reading EXR inputs takes
-/// it, with or without layers.
-#[derive(Args, Clone, Default)]
-#[command(next_help_heading = "Layers, views and parts")]
-pub struct PartArgs {
-    /// Part (name or index) of inputs given without `:PART`.
-    #[arg(long)]
-    pub part: Option<String>,
-}
-
-/// Options every job that writes files takes.
-#[derive(Args, Clone)]
-pub struct RunArgs {
-    /// Frames: A-B, A-B:STEP, or a comma list (default: those on disk).
-    /// Frame numbers may be negative (`--frames -3-2`), so a value starting
-    /// with `-` is the frames, not an option.
-    #[arg(
-        help_heading = "Frames and sequences",
-        long,
-        allow_hyphen_values = true
-    )]
-    pub frames: Option<String>,
-    /// Only the COUNT frames of --frames from FIRST on, FIRST a chunk's
-    /// first frame: a farm task named by its first frame alone (OpenCue's
-    /// #FRAME_START#, whose #FRAME_END# Cuebot before 1.0 gets wrong).
-    #[arg(help_heading = "Frames and sequences", long, value_name = "FIRST,COUNT", allow_hyphen_values = true, value_parser = parse_chunk_from)]
-    pub chunk_from: Option<(i64, usize)>,
-    /// Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
-    /// (default: the input's whose header the output keeps; each command's
-    /// help says which, `compression_default`).
-    #[arg(help_heading = "Output", long)]
-    pub compression: Option<String>,
-    /// libdeflate's effort for ZIP and ZIPS output, 1 (fastest) to 12
-    /// (smallest); noisy low-byte halves always take ISA-L's fastest level.
-    /// The default 2 writes files within 2.5% of OpenEXR's size.
-    #[arg(help_heading = "Output", long, default_value_t = crate::io::deflate::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
-    pub zip_level: u8,
-    /// DWAA and DWAB output's compression level, written as the file's
-    /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as
-    /// OpenEXR's).
-    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
-    pub dwa_level: Option<f32>,
-    /// Write tiled files with tiles of WxH pixels (N: NxN), one level
-    /// (default: tiles as the background's if it is tiled, else scanlines).
-    #[arg(help_heading = "Output", long, value_parser = parse_tile)]
-    pub tile: Option<exr::math::Vec2<usize>>,
-    /// Write scanline files even when the background is tiled.
-    #[arg(help_heading = "Output", long, conflicts_with = "tile")]
-    pub scanline: bool,
-    /// What a missing input frame does: error (before any work), skip the
-    /// output frame, hold the nearest earlier frame, or black.
-    #[arg(
-        help_heading = "Frames and sequences",
-        long,
-        value_enum,
-        default_value = "error"
-    )]
-    pub missing: crate::engine::sources::MissingPolicy,
-    /// Set an attribute of the output's header: NAME=VALUE, typed as oiiotool
-    /// types it (an integer is an int, another number a float, else a
-    /// string) or as :TYPE says (string, int, float, double, v2i, v2f, v3i,
-    /// v3f, box2i, box2f, m33f, m44f, rational, timecode, keycode; values
-    /// of several numbers separated by commas). Repeatable.
-    #[arg(help_heading = "Output", long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
-    pub attribs: Vec<crate::io::attributes::Attrib>,
-    /// Erase the output header's attributes of this name, or matching this
-    /// glob (`*`, `?`), before --attrib sets any. Repeatable.
-    #[arg(help_heading = "Output", long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
-    pub erase_attribs: Vec<String>,
-    /// Write each frame's timeCode: HH:MM:SS:FF (HH:MM:SS;FF drop-frame) for
-    /// the shot's first frame, or @FRAME's (01:00:00:00@1001), counted at
-    /// the frame rate; or +N / -N to shift the input's own by N frames.
-    #[arg(help_heading = "Output", long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
-    pub timecode: Option<crate::io::timecode::TimecodeSpec>,
-    /// Frame rate, written as framesPerSecond: N, N/D (24000/1001) or an
-    /// NTSC rate as 23.976 (default: the input's).
-    #[arg(help_heading = "Output", long, value_name = "RATE", allow_hyphen_values = true, value_parser = crate::io::attributes::parse_fps)]
-    pub fps: Option<exr::meta::attribute::Rational>,
-    /// JPEG output's quality, 1 to 100 (default 90).
-    #[arg(help_heading = "Review media (.png, .jpg, .tif outputs)", long, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=100))]
-    pub quality: Option<u8>,
-    /// Bits per sample: PNG 8 or 16, TIFF 8, 16 or float (scene-linear, as
-    /// it is); JPEG 8 (default 8).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
-    pub bits: Option<crate::io::media::Bits>,
-    /// What turns linear pixels into 8 or 16-bit code values: srgb (the sRGB
-    /// curve, clamped; the default) or none (pixels that are display code
-    /// values already, after ociodisplay).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
-    pub transfer: Option<crate::io::media::Transfer>,
-    /// Text drawn into a corner of each frame, white on black; fields:
-    /// {frame}, {frame:4} (zero-padded), {timecode}, {file} (the first
-    /// input's), {output}, {attr:NAME}.
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_name = "TEXT"
-    )]
-    pub burn_in: Option<String>,
-    /// The burn-in's corner (default bottom-left).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
-    pub burn_in_corner: Option<crate::io::burn_in::Corner>,
-    /// Write a slate first: frame (the shot's first - 1), black, with the
-    /// job's output, frames, inputs, timecode, fps and attributes in white;
-    /// only by a run that starts at the shot's first frame.
-    #[arg(help_heading = "Output", long)]
-    pub slate: bool,
-    /// Skip frames whose output already exists and decodes completely.
-    #[arg(help_heading = "Run control", long)]
-    pub resume: bool,
-    /// Report a frame with bad input and go on with the others (the exit
-    /// code is still non-zero).
-    #[arg(help_heading = "Run control", long)]
-    pub keep_going: bool,
-    /// No progress bar and no summary.
-    #[arg(help_heading = "Run control", long, short)]
-    pub quiet: bool,
-    /// Print a JSON summary on standard output at the end.
-    #[arg(help_heading = "Run control", long)]
-    pub json: bool,
-    /// Lines on standard output for a log or a farm: a line per frame
-    /// (written, kept) by default when it is not a terminal (with --quiet
-    /// too); openjd and deadline add their progress lines.
-    #[arg(
-        help_heading = "Run control",
-        long,
-        value_enum,
-        value_name = "FORMAT",
-        conflicts_with = "json"
-    )]
-    pub progress: Option<crate::report::FarmLog>,
-    /// Check every frame's inputs and the outputs, print the files each
-    /// output frame reads and writes (with --json as JSON), decode nothing
-    /// and write nothing.
-    #[arg(help_heading = "Run control", long)]
-    pub dry_run: bool,
-    /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
-    /// band of a huge plate for one machine; `exrcomp stitch` joins them.
-    #[arg(help_heading = "Frames and sequences", long, allow_hyphen_values = true, value_parser = parse_rows)]
-    pub rows: Option<(i32, i32)>,
-    /// The most pixels an output frame may have (its data window); by
-    /// default 64 times the largest input's (data or display window), at
-    /// least 4096x4096, so that a typo's size is refused before it fills
-    /// a volume. Generated plates have none.
-    #[arg(help_heading = "Output", long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
-    pub max_output_pixels: Option<u64>,
-    /// Run the operation on every part of a multi-part input instead of one,
-    /// each part keeping its own channels, windows and attributes; for
-    /// operations of one input (specs/file-format.md, "Parts").
-    #[arg(help_heading = "Frames and sequences", long, conflicts_with = "rows")]
-    pub all_parts: bool,
-    /// Run the whole graph at this fraction of the size (0.5: half), for
-    /// previews: each input resized as it is read (resize's box filter),
-    /// each operation's lengths in pixels (radii, regions, shifts) scaled.
-    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
-    pub proxy_scale: Option<f32>,
-    /// Rows per strip, rounded up to whole output blocks (for tests of strip
-    /// boundaries; the default sizes strips by bytes).
-    #[arg(long, hide = true)]
-    pub strip_rows: Option<usize>,
-}
-
-impl RunArgs {
-    /// The output's block layout these options ask for.
-    pub fn blocks(&self) -> crate::engine::plan::OutputBlocks {
-        use crate::engine::plan::OutputBlocks;
-        match (self.tile, self.scanline) {
-            (Some(size), _) => OutputBlocks::Tiles(size),
-            (None, true) => OutputBlocks::Scanlines,
-            (None, false) => OutputBlocks::FollowInput,
-        }
-    }
+    pub job: FarmArgs,
 }
 
 fn parse_chart(text: &str) -> Result<PathBuf, String> {
@@ -565,53 +360,6 @@ fn parse_chart(text: &str) -> Result<PathBuf, String> {
         _ => Err(format!(
             "'{text}': a chart is written as FILE.svg or FILE.png"
         )),
-    }
-}
-
-/// `FIRST,COUNT`: a chunk's first frame and its size (at least 1).
-fn parse_chunk_from(text: &str) -> Result<(i64, usize), String> {
-    let bad = || format!("expected FIRST,COUNT (a chunk's first frame, its frames), not '{text}'");
-    let (first, count) = text.split_once(',').ok_or_else(bad)?;
-    match (first.trim().parse(), count.trim().parse()) {
-        (Ok(first), Ok(count)) if count >= 1 => Ok((first, count)),
-        _ => Err(bad()),
-    }
-}
-
-fn parse_rows(text: &str) -> Result<(i32, i32), String> {
-    let bad = || "expected Y0-Y1 (rows Y0 to Y1, Y1 excluded)".to_string();
-    let (a, b) = text.rsplit_once('-').ok_or_else(bad)?;
-    Ok((
-        a.trim().parse().map_err(|_| bad())?,
-        b.trim().parse().map_err(|_| bad())?,
-    ))
-}
-
-/// A tile size: `WxH`, or `N` for N x N, each 1 to 65536 pixels.
-pub fn parse_tile(text: &str) -> Result<exr::math::Vec2<usize>, String> {
-    let bad = || format!("tile size '{text}': expected WxH or N, 1 to 65536 pixels each");
-    let number = |t: &str| {
-        t.trim()
-            .parse::<usize>()
-            .ok()
-            .filter(|n| (1..=65536).contains(n))
-            .ok_or_else(bad)
-    };
-    match text.split_once(['x', 'X']) {
-        Some((w, h)) => Ok(exr::math::Vec2(number(w)?, number(h)?)),
-        None => number(text).map(|n| exr::math::Vec2(n, n)),
-    }
-}
-
-fn parse_level(text: &str) -> Result<exr::math::Vec2<usize>, String> {
-    let number = |t: &str| {
-        t.trim()
-            .parse::<usize>()
-            .map_err(|_| "expected N (a mipmap level) or X,Y (a ripmap level)".to_string())
-    };
-    match text.split_once(',') {
-        Some((x, y)) => Ok(exr::math::Vec2(number(x)?, number(y)?)),
-        None => number(text).map(|n| exr::math::Vec2(n, n)),
     }
 }
 
@@ -778,7 +526,7 @@ value_enum!(crate::engine::sources::MissingPolicy {
     Black => "black": "Use transparent black, shaped like the nearest frame of that input",
 });
 
-value_enum!(crate::generate::PlateKind {
+value_enum!(crate::ops::sources::plate::PlateKind {
     Bg => "bg": "Opaque grainy gradient with a checker pattern; RGBA and Z",
     Fg => "fg": "A soft-edged disc moving across a transparent frame; premultiplied RGBA, Z and screen-space motion vectors (forward.u, forward.v)",
     Object => "object": "Differential rendering's object alone: a shaded ball above the middle of a transparent frame; RGBA and Z",
@@ -788,7 +536,7 @@ value_enum!(crate::generate::PlateKind {
     Ball => "ball": "The demo's foreground for motion blur: a striped ball circling fast; premultiplied RGBA, Z, forward.u, forward.v",
 });
 
-value_enum!(crate::generate::PixelType {
+value_enum!(crate::ops::sources::plate::PixelType {
     Half => "half": "16-bit half floats",
     Float => "float": "32-bit floats",
 });
@@ -811,8 +559,8 @@ pub fn command() -> clap::Command {
             match compression_default(&name) {
                 Some(default) => sub.mut_arg("compression", |arg| {
                     arg.help(format!(
-                        "Output compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, \
-                         dwab (default: {default})"
+                        "Output compression: {} (default: {default})",
+                        CompressionName::names()
                     ))
                 }),
                 None => sub,

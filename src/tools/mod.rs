@@ -1,0 +1,10 @@
+//! Tools built on runs: the benchmark and its chart, the demo and its contact
+//! sheet, farm submission, and `info`.
+
+pub mod bench;
+pub mod bench_chart;
+pub mod bench_stats;
+pub mod contact_sheet;
+pub mod demo;
+pub mod farm;
+pub mod info;
