@@ -1,6 +1,7 @@
 //! Files: frame sequences, the EXR reader and writer, review media.
 
 pub mod attributes;
+pub mod b44;
 pub mod burn_in;
 pub mod deep;
 pub mod deflate;

@@ -213,20 +213,21 @@ fn codec_header(header: &Header, rect: IntegerBounds) -> Option<Header> {
     Some(codec)
 }
 
-/// Why the crate's codec for `header`'s compression cannot take block
-/// `rect`, if it cannot: its B44 reads and writes subsampled channels out of
-/// place (a panic, checked against OpenEXR's own files), and its block sizes
-/// are whole bytes per pixel.
+/// Why subsampled channels cannot be written in `compression`, if they
+/// cannot: B44 of them is read (`b44`), not written.
 pub fn refused(compression: Compression) -> Option<String> {
-    matches!(compression, Compression::B44 | Compression::B44A).then(|| {
-        format!("{compression} of subsampled channels is not supported (OpenEXR's B44 layout of them is not implemented)")
+    is_b44(compression).then(|| {
+        format!(
+            "{compression} of subsampled channels is read, not written: choose another compression"
+        )
     })
 }
 
+fn is_b44(compression: Compression) -> bool {
+    matches!(compression, Compression::B44 | Compression::B44A)
+}
+
 fn codec(header: &Header, rect: IntegerBounds) -> Result<Header, String> {
-    if let Some(message) = refused(header.compression) {
-        return Err(message);
-    }
     codec_header(header, rect).ok_or_else(|| {
         format!(
             "{} blocks of these subsampled channels cannot be coded (their size is not a whole \
@@ -237,12 +238,20 @@ fn codec(header: &Header, rect: IntegerBounds) -> Result<Header, String> {
 }
 
 /// Decompresses block `rect` (absolute) of a part with subsampled channels
-/// (not ZIP: see `zip`), little-endian bytes in, native out.
+/// (not ZIP: see `zip`), little-endian bytes in, native out. The crate's
+/// B44 lays subsampled channels out at full resolution (a panic, or wrong
+/// samples): B44 is unpacked by `b44`, or kept when stored raw.
 pub fn decompress(
     header: &Header,
     packed: Vec<u8>,
     rect: IntegerBounds,
 ) -> Result<Vec<u8>, String> {
+    if is_b44(header.compression) {
+        return match packed.len() == block_bytes(&header.channels, rect) {
+            true => Ok(packed),
+            false => b44(&header.channels, &packed, rect),
+        };
+    }
     let codec = codec(header, rect)?;
     header
         .compression
@@ -250,9 +259,54 @@ pub fn decompress(
         .map_err(|e| e.to_string())
 }
 
+/// B44 block `rect` (absolute) of `channels` unpacked (`b44`) and laid out
+/// as OpenEXR's uncompressed block: line after line, on each the channels
+/// that hold samples on it.
+fn b44(channels: &ChannelList, packed: &[u8], rect: IntegerBounds) -> Result<Vec<u8>, String> {
+    if let Some(c) = channels.list.iter().find(|c| c.quantize_linearly) {
+        return Err(format!(
+            "B44 of subsampled channels with a perceptually linear channel ({}) is not supported",
+            c.name
+        ));
+    }
+    let (x0, y0, x1, y1) = (
+        rect.position.x(),
+        rect.position.y(),
+        rect.end().x(),
+        rect.end().y(),
+    );
+    let planes: Vec<super::b44::Plane> = channels
+        .list
+        .iter()
+        .map(|c| super::b44::Plane {
+            nx: count(c.sampling.x(), x0, x1),
+            ny: count(c.sampling.y(), y0, y1),
+            bytes: c.sample_type.bytes_per_sample(),
+        })
+        .collect();
+    let samples = super::b44::decompress(&planes, packed)?;
+    let mut out = Vec::with_capacity(block_bytes(channels, rect));
+    let mut at = vec![0; planes.len()];
+    for y in y0..y1 {
+        for (((plane, c), samples), at) in
+            planes.iter().zip(&channels.list).zip(&samples).zip(&mut at)
+        {
+            if holds_line(c.sampling.y(), y) {
+                let n = plane.nx * plane.bytes;
+                out.extend_from_slice(&samples[*at..*at + n]);
+                *at += n;
+            }
+        }
+    }
+    Ok(out)
+}
+
 /// Compresses block `rect` (absolute) of a part with subsampled channels
 /// (not ZIP: see `zip`).
 pub fn compress(header: &Header, data: Vec<u8>, rect: IntegerBounds) -> Result<Vec<u8>, String> {
+    if let Some(message) = refused(header.compression) {
+        return Err(message);
+    }
     let codec = codec(header, rect)?;
     let raw = data.len();
     let packed = header
