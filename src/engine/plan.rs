@@ -660,7 +660,7 @@ fn plan_frame(
             .to_string()
     });
     if let Some(message) = crate::io::subsampling::any(&header)
-        .then(|| tiled.or_else(|| crate::io::subsampling::refused(header.compression)))
+        .then_some(tiled)
         .flatten()
     {
         let source = match job.header_base {

@@ -4,9 +4,9 @@
 //! channel in the list's order, each at its own resolution (`nx` by `ny`
 //! samples); a half channel is cut into 4 x 4 blocks of 14 bytes (3 when the
 //! block is flat, B44A), the last row and column repeated into a partial
-//! block; any other channel is stored raw. Blocks are unpacked here; the
-//! crate is still used for parts without subsampled channels; `subsampling`
-//! lays the unpacked channels out as lines.
+//! block; any other channel is stored raw. Channels are packed and unpacked
+//! here, `subsampling` lays them out as lines; the crate's B44 still codes
+//! parts without subsampled channels.
 
 /// A B44 block's flat (3-byte) form has this or more in its third byte.
 const FLAT: u8 = 13 << 2;
@@ -101,9 +101,134 @@ pub fn decompress(planes: &[Plane], packed: &[u8]) -> Result<Vec<Vec<u8>>, Strin
     }
 }
 
+/// Packs 16 halves into 14 bytes, or 3 when they are all equal and `flat`
+/// (B44A) asks for it (ImfB44Compressor.cpp's pack, exactMax true: the
+/// largest sample kept as accurately as the shift allows).
+fn pack(s: &[u16; 16], flat: bool, out: &mut Vec<u8>) {
+    let t: [u16; 16] = s.map(half_to_ordered);
+    let t_max = *t.iter().max().expect("16 samples");
+    // Differences from the largest, rounded off by a growing shift until
+    // every running difference fits 6 bits (biased by 0x20).
+    let (mut shift, mut d, mut r) = (0, [0i32; 16], [0i32; 15]);
+    loop {
+        for (d, &t) in d.iter_mut().zip(&t) {
+            *d = shift_and_round(i32::from(t_max) - i32::from(t), shift);
+        }
+        r[..3].copy_from_slice(&[d[0] - d[4], d[4] - d[8], d[8] - d[12]]);
+        for column in 0..3 {
+            for row in 0..4 {
+                r[3 + column * 4 + row] = d[row * 4 + column] - d[row * 4 + column + 1];
+            }
+        }
+        r.iter_mut().for_each(|r| *r += 0x20);
+        if r.iter().all(|&r| (0..=0x3f).contains(&r)) {
+            break;
+        }
+        shift += 1;
+    }
+    if flat && r.iter().all(|&r| r == 0x20) {
+        out.extend_from_slice(&[(t[0] >> 8) as u8, t[0] as u8, 0xfc]);
+        return;
+    }
+    let t0 = (i32::from(t_max) - (d[0] << shift)) as u16;
+    let r = r.map(|r| r as u32);
+    let b = [
+        (shift << 2) as u32 | (r[0] >> 4),
+        (r[0] << 4) | (r[1] >> 2),
+        (r[1] << 6) | r[2],
+        (r[3] << 2) | (r[4] >> 4),
+        (r[4] << 4) | (r[5] >> 2),
+        (r[5] << 6) | r[6],
+        (r[7] << 2) | (r[8] >> 4),
+        (r[8] << 4) | (r[9] >> 2),
+        (r[9] << 6) | r[10],
+        (r[11] << 2) | (r[12] >> 4),
+        (r[12] << 4) | (r[13] >> 2),
+        (r[13] << 6) | r[14],
+    ];
+    out.extend_from_slice(&t0.to_be_bytes());
+    out.extend(b.map(|b| b as u8));
+}
+
+/// `x` over 2^shift, rounded half to even (shiftAndRound).
+fn shift_and_round(x: i32, shift: i32) -> i32 {
+    let x = x << 1;
+    let a = (1 << shift) - 1;
+    let b = (x >> (shift + 1)) & 1;
+    (x + a + b) >> (shift + 1)
+}
+
+/// The order B44 compares halves in (the inverse of `ordered_to_half`;
+/// infinities and NaNs all as 0x8000).
+fn half_to_ordered(v: u16) -> u16 {
+    if v & 0x7c00 == 0x7c00 {
+        0x8000
+    } else if v & 0x8000 != 0 {
+        !v
+    } else {
+        v | 0x8000
+    }
+}
+
+/// One half channel's samples (row-major, little-endian) in 4 x 4 blocks,
+/// the last row and column repeated into a partial block.
+fn pack_plane(nx: usize, ny: usize, samples: &[u8], flat: bool, out: &mut Vec<u8>) {
+    let at = |x: usize, y: usize| {
+        let i = 2 * (y.min(ny - 1) * nx + x.min(nx - 1));
+        u16::from_le_bytes([samples[i], samples[i + 1]])
+    };
+    for y in (0..ny).step_by(4) {
+        for x in (0..nx).step_by(4) {
+            pack(
+                &std::array::from_fn(|i| at(x + i % 4, y + i / 4)),
+                flat,
+                out,
+            );
+        }
+    }
+}
+
+/// Packs channels `planes` (their samples row-major, little-endian, in the
+/// channel list's order) as B44, or B44A when `flat`.
+pub fn compress(planes: &[Plane], samples: &[Vec<u8>], flat: bool) -> Vec<u8> {
+    let mut out = Vec::new();
+    for (plane, samples) in planes.iter().zip(samples) {
+        match plane.bytes == 2 && plane.nx * plane.ny > 0 {
+            true => pack_plane(plane.nx, plane.ny, samples, flat, &mut out),
+            false => out.extend_from_slice(samples),
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{decompress, Plane};
+    use super::{compress, decompress, Plane};
+
+    #[test]
+    fn packs_as_it_unpacks_exactly_where_the_differences_fit() {
+        let plane = [Plane {
+            nx: 5,
+            ny: 3,
+            bytes: 2,
+        }];
+        // Halves 1.0 + k ulps: differences of at most 14, shift 0, exact.
+        let ones: Vec<u8> = (0..15u16)
+            .flat_map(|k| (0x3c00 + k).to_le_bytes())
+            .collect();
+        let packed = compress(&plane, std::slice::from_ref(&ones), true);
+        assert_eq!(packed.len(), 2 * 14);
+        assert_eq!(decompress(&plane, &packed).unwrap(), vec![ones]);
+        // All equal: B44A's 3 bytes a block, B44's 14.
+        let flat: Vec<u8> = [0x00, 0xc0].repeat(15);
+        assert_eq!(
+            compress(&plane, std::slice::from_ref(&flat), true).len(),
+            2 * 3
+        );
+        let packed = compress(&plane, std::slice::from_ref(&flat), false);
+        assert_eq!(packed.len(), 2 * 14);
+        assert_eq!(decompress(&plane, &packed).unwrap(), vec![flat]);
+    }
 
     #[test]
     fn unpacks_flat_and_stepped_blocks_into_a_partial_plane() {
