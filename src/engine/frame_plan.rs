@@ -714,7 +714,7 @@ fn check_layout(job: &Job, opened: &Opened, header: &Header, carried: Option<usi
             .to_string()
     });
     if let Some(message) = crate::io::subsampling::any(header)
-        .then(|| tiled.or_else(|| crate::io::subsampling::refused(header.compression)))
+        .then_some(tiled)
         .flatten()
     {
         let source = match opened.header_file(job) {

@@ -3,6 +3,7 @@
 //! imports the engine or the front ends.
 
 pub mod attributes;
+pub mod b44;
 pub mod burn_in;
 pub mod deep;
 pub mod deflate;

@@ -11,6 +11,7 @@
 //! The crate's codecs lay subsampled channels out that way already; they are
 //! handed the block's true size (`codec_header`).
 
+use super::b44;
 use super::standard_attributes::Attribute;
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, ChannelList, IntegerBounds, SampleType, Text};
@@ -213,20 +214,11 @@ fn codec_header(header: &Header, rect: IntegerBounds) -> Option<Header> {
     Some(codec)
 }
 
-/// Why the crate's codec for `header`'s compression cannot take block
-/// `rect`, if it cannot: its B44 reads and writes subsampled channels out of
-/// place (a panic, checked against OpenEXR's own files), and its block sizes
-/// are whole bytes per pixel.
-pub fn refused(compression: Compression) -> Option<String> {
-    matches!(compression, Compression::B44 | Compression::B44A).then(|| {
-        format!("{compression} of subsampled channels is not supported (OpenEXR's B44 layout of them is not implemented)")
-    })
+fn is_b44(compression: Compression) -> bool {
+    matches!(compression, Compression::B44 | Compression::B44A)
 }
 
 fn codec(header: &Header, rect: IntegerBounds) -> Result<Header, String> {
-    if let Some(message) = refused(header.compression) {
-        return Err(message);
-    }
     codec_header(header, rect).ok_or_else(|| {
         format!(
             "{} blocks of these subsampled channels cannot be coded (their size is not a whole \
@@ -237,12 +229,20 @@ fn codec(header: &Header, rect: IntegerBounds) -> Result<Header, String> {
 }
 
 /// Decompresses block `rect` (absolute) of a part with subsampled channels
-/// (not ZIP: see `zip`), little-endian bytes in, native out.
+/// (not ZIP: see `zip`), little-endian bytes in, native out. The crate's
+/// B44 lays subsampled channels out at full resolution (a panic, or wrong
+/// samples): B44 is unpacked by `b44`, or kept when stored raw.
 pub fn decompress(
     header: &Header,
     packed: Vec<u8>,
     rect: IntegerBounds,
 ) -> Result<Vec<u8>, String> {
+    if is_b44(header.compression) {
+        return match packed.len() == block_bytes(&header.channels, rect) {
+            true => Ok(packed),
+            false => b44_decompress(&header.channels, &packed, rect),
+        };
+    }
     let codec = codec(header, rect)?;
     header
         .compression
@@ -250,9 +250,101 @@ pub fn decompress(
         .map_err(|e| e.to_string())
 }
 
+/// Each channel's samples across and down in block `rect` (absolute), for
+/// `b44`; an error for a pLinear channel, whose B44 is not implemented.
+fn b44_planes(channels: &ChannelList, rect: IntegerBounds) -> Result<Vec<b44::Plane>, String> {
+    if let Some(c) = channels.list.iter().find(|c| c.quantize_linearly) {
+        return Err(format!(
+            "B44 of subsampled channels with a perceptually linear channel ({}) is not supported",
+            c.name
+        ));
+    }
+    let (x0, y0, x1, y1) = (
+        rect.position.x(),
+        rect.position.y(),
+        rect.end().x(),
+        rect.end().y(),
+    );
+    Ok(channels
+        .list
+        .iter()
+        .map(|c| b44::Plane {
+            nx: count(c.sampling.x(), x0, x1),
+            ny: count(c.sampling.y(), y0, y1),
+            bytes: c.sample_type.bytes_per_sample(),
+        })
+        .collect())
+}
+
+/// Walks the lines of block `rect` (absolute): for each channel holding
+/// samples on a line, `each(channel, bytes of its samples there)`.
+fn walk_lines(
+    channels: &ChannelList,
+    planes: &[b44::Plane],
+    rect: IntegerBounds,
+    mut each: impl FnMut(usize, usize),
+) {
+    for y in rect.position.y()..rect.end().y() {
+        for (k, (plane, c)) in planes.iter().zip(&channels.list).enumerate() {
+            if holds_line(c.sampling.y(), y) {
+                each(k, plane.nx * plane.bytes);
+            }
+        }
+    }
+}
+
+/// B44 block `rect` (absolute) of `channels` unpacked (`b44`) and laid out
+/// as OpenEXR's uncompressed block: line after line, on each the channels
+/// that hold samples on it.
+fn b44_decompress(
+    channels: &ChannelList,
+    packed: &[u8],
+    rect: IntegerBounds,
+) -> Result<Vec<u8>, String> {
+    let planes = b44_planes(channels, rect)?;
+    let samples = b44::decompress(&planes, packed)?;
+    let mut out = Vec::with_capacity(block_bytes(channels, rect));
+    let mut at = vec![0; planes.len()];
+    walk_lines(channels, &planes, rect, |k, n| {
+        out.extend_from_slice(&samples[k][at[k]..at[k] + n]);
+        at[k] += n;
+    });
+    Ok(out)
+}
+
+/// Block `rect` (absolute) of `channels` (OpenEXR's uncompressed layout)
+/// packed as B44, or B44A when `flat`; kept raw when that is not smaller.
+fn b44_compress(
+    channels: &ChannelList,
+    data: Vec<u8>,
+    rect: IntegerBounds,
+    flat: bool,
+) -> Result<Vec<u8>, String> {
+    let planes = b44_planes(channels, rect)?;
+    let mut samples: Vec<Vec<u8>> = planes
+        .iter()
+        .map(|p| Vec::with_capacity(p.nx * p.ny * p.bytes))
+        .collect();
+    let mut at = 0;
+    walk_lines(channels, &planes, rect, |k, n| {
+        samples[k].extend_from_slice(&data[at..at + n]);
+        at += n;
+    });
+    let packed = b44::compress(&planes, &samples, flat);
+    Ok(if packed.len() < data.len() {
+        packed
+    } else {
+        data
+    })
+}
+
 /// Compresses block `rect` (absolute) of a part with subsampled channels
 /// (not ZIP: see `zip`).
 pub fn compress(header: &Header, data: Vec<u8>, rect: IntegerBounds) -> Result<Vec<u8>, String> {
+    if is_b44(header.compression) {
+        let flat = header.compression == Compression::B44A;
+        return b44_compress(&header.channels, data, rect, flat);
+    }
     let codec = codec(header, rect)?;
     let raw = data.len();
     let packed = header

@@ -336,9 +336,10 @@ fn every_good_image_passes_info_transcode_and_over_with_itself() {
 /// generated plate (RGBA half, Z and vectors float), a shipped RGB image
 /// with a display window and the shipped deep pass: tiles of 32, 64 and
 /// 256, mipmaps and ripmaps rounded down and up, and multi-part files
-/// mixing scanline, tiled, mipmapped, ripmapped and deep parts. `None`
-/// without the tools.
-fn made_images(d: &Path) -> Option<Vec<(String, PathBuf)>> {
+/// mixing scanline, tiled, mipmapped, ripmapped and deep parts; with PyPI's
+/// OpenEXR, luminance/chroma files (Y, RY, BY at sampling 2 2, with and
+/// without A) in B44 and B44A. `None` without the tools.
+pub fn made_images(d: &Path) -> Option<Vec<(String, PathBuf)>> {
     let (oiiotool, maketiled, multipart) = (
         peer("oiiotool")?,
         peer("exrmaketiled")?,
@@ -432,7 +433,23 @@ fn made_images(d: &Path) -> Option<Vec<(String, PathBuf)>> {
         args.extend([p("-o"), p("OUT")]);
         make(name, &multipart, &args);
     }
+    made.extend(luminance_chroma_b44(d));
     Some(made)
+}
+
+/// B44 and B44A luminance/chroma files written by OpenEXR (PyPI's
+/// OpenEXR, tests/peers/openexr_subsampled.py), none without it.
+fn luminance_chroma_b44(d: &Path) -> Vec<(String, PathBuf)> {
+    let Some(python) = openexr_python() else {
+        return Vec::new();
+    };
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/peers/openexr_subsampled.py");
+    let folder = d.join("luminance-chroma");
+    std::fs::create_dir_all(&folder).unwrap();
+    succeed(Command::new(python).arg(script).arg("write").arg(&folder));
+    ["yc_b44", "yc_b44a", "yca_b44", "yca_b44a"]
+        .map(|name| (name.to_string(), folder.join(format!("{name}.exr"))))
+        .to_vec()
 }
 
 /// The same sweep over files of every class made here by the peers.
