@@ -107,8 +107,11 @@ fn decode_bytes(
         // holds them); each later one only those its span gained: its
         // chunks read, inflated and decoded, the strip built of them and
         // the one in the channel.
+        // (A strip's rows at least where spans are strips: the last strip
+        // may be shorter, the bound is the steady state's.)
         false => {
             let (first, later) = read;
+            let later = later.max(s.min(first));
             (3 * (later + 2 * lines) + 2 * later).max(apart(first) + 2 * in_flight(first))
         }
     };
