@@ -4,24 +4,13 @@
 //! upwards, bottom row first.
 
 use super::graph::{Graph, Node, Op};
-use super::memory_bound::{spanned_rows, window_rows};
+use super::memory_bound::{band_rows, spanned_rows, window_rows};
 use super::region::{rows_of, Regions};
 use crate::io::rows::Rows;
 use crate::stage_time::{self, Stage};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use rayon::prelude::*;
 use std::ops::Range;
-
-/// Samples below which a band is not worth a task of its own.
-const MIN_BAND_SAMPLES: usize = 16 << 10;
-
-/// Rows per band for `rows` rows `width` wide: a few bands per thread, so
-/// that uneven bands even out, none smaller than `MIN_BAND_SAMPLES`.
-fn band_rows(rows: usize, width: usize) -> usize {
-    let bands = 4 * rayon::current_num_threads();
-    let floor = MIN_BAND_SAMPLES.div_ceil(width.max(1));
-    rows.div_ceil(bands).max(floor).max(1)
-}
 
 /// One frame's evaluation state.
 pub struct Composer<'g> {

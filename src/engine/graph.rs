@@ -71,6 +71,14 @@ pub trait Op: Send + Sync + std::fmt::Debug {
         None
     }
 
+    /// Bytes a band of it (`band`) allocates while it is computed, besides
+    /// the windows: buffers as long as the band, its halo's rows or its
+    /// width, freed when the band is done. `memory_bound` counts one band's
+    /// per thread, as the threads compute a node's bands at once.
+    fn scratch(&self, _band: &Band) -> usize {
+        0
+    }
+
     /// The output's channels, given each input's channels: by default the
     /// first input's.
     fn channels(&self, inputs: &[&[ChannelDescription]]) -> Vec<ChannelDescription> {
@@ -154,6 +162,15 @@ pub trait Op: Send + Sync + std::fmt::Debug {
     /// `out` is one band of the rows the engine needs: it runs the bands of a
     /// node on the thread pool at once, so an op is written single-threaded.
     fn compute(&self, frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String>;
+}
+
+/// What a band's scratch depends on (`Op::scratch`): its rows, the columns
+/// of its node's region, and each input's channels and region width.
+pub struct Band<'a> {
+    pub rows: usize,
+    pub width: usize,
+    pub inputs: &'a [&'a [ChannelDescription]],
+    pub widths: &'a [usize],
 }
 
 pub enum Node {

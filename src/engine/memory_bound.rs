@@ -3,30 +3,48 @@
 //! nodes that stream at another size), which a farm job asks of its workers.
 
 use super::frame_plan::FramePlan;
-use super::graph::{Graph, Node};
+use super::graph::{Band, Graph, Node};
 use super::region::Regions;
 use exr::meta::attribute::IntegerBounds;
+use exr::prelude::Compression;
 
 /// Program, thread stacks and allocator.
 const PROGRAM: u64 = 10 << 20;
 
+/// Samples below which a band is not worth a task of its own.
+const MIN_BAND_SAMPLES: usize = 16 << 10;
+
+/// Rows per band for `rows` rows `width` wide: a few bands per thread, so
+/// that uneven bands even out, none smaller than `MIN_BAND_SAMPLES`.
+pub fn band_rows(rows: usize, width: usize) -> usize {
+    let bands = 4 * rayon::current_num_threads();
+    let floor = MIN_BAND_SAMPLES.div_ceil(width.max(1));
+    rows.div_ceil(bands).max(floor).max(1)
+}
+
 /// Bytes at most resident while `plan` runs through `graph`:
 ///
 /// ```text
-/// Σ_inputs 3 (S_i + 2 L_i) R_i b_i + Σ_inputs 2 S_i R_i b_i
-///     + max_live Σ W_n (S_n + 2 h_n) b_n + (5 + 2 B) S W b_o + 10 MiB
+/// Σ_inputs max(3 (A_i + 2 L_i) + 2 A_i, F_i + 2 L_i + 2 min(T L_i, F_i + 2 L_i)) R_i b_i
+///     + max_live Σ W_n (S_n + 2 h_n) b_n + (5 + 2 B) S W b_o
+///     + max_n T scratch_n + 10 MiB
 /// ```
 ///
 /// with `W` and `S` the output's width and strip rows (at most the rows
 /// computed: a strip never holds more), `W_n` a node's region's width and
 /// `S_n` the most rows of its region a strip spans (`S` where nothing
 /// resamples), `R_i` the width an input is decoded over (its data window
-/// read: none for a black input) and `S_i` its node's span, and `B` the
-/// batches of chunks the writer lets wait (`writer::IN_FLIGHT`), each with
-/// its bytes laid out. An input read whole (its span its whole region: a
-/// turn near 90 degrees, readers that disagree) is decoded once, its first
-/// term `(S_i + 2 L_i + S_i + 2 min(T L_i, S_i + 2 L_i)) R_i b_i` and no
-/// strip in the channel, `T` the threads.
+/// read: none for a black input), `F_i` the rows its first strip reads
+/// (its span, which its window then holds) and `A_i` the most a later one
+/// reads (what its span gained: `S` where nothing resamples), `T` the
+/// threads, and `B` the batches of chunks the writer lets wait
+/// (`writer::IN_FLIGHT`), each with its bytes laid out. ZIP chunks decode
+/// into the strip (`F_i` is 0 in the second term). An input read whole
+/// (its span its whole region: a turn near 90 degrees, readers that
+/// disagree) is decoded once, its first term `(S_i + 2 L_i + S_i + 2 min(T
+/// L_i, S_i + 2 L_i)) R_i b_i`, `2 min(..) R_i b_i` for ZIP. `scratch_n` is
+/// a band's own buffers (`Op::scratch`), the nodes computed one after
+/// another.
 pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
     let threads = rayon::current_num_threads() as u64;
@@ -37,24 +55,10 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
             .map(|c| c.sample_type.bytes_per_sample() as u64)
             .sum::<u64>()
     };
+    let reads = read_rows(plan, graph);
     let decode: u64 = (0..plan.inputs.len())
         .map(|i| {
-            let row = plan.read[i].size.width() as u64 * bytes(&plan.header_of(i).channels.list);
-            let rows = graph.input_node(i).map_or(s, |n| spans[n] as u64);
-            let lines = plan.levels[i].block.y() as u64;
-            let whole = !plan.regions.shared()
-                && graph
-                    .input_node(i)
-                    .is_some_and(|n| spans[n] >= plan.regions.rect(n).size.height());
-            match whole {
-                // Decoded once: its chunks and the strip built of them, and
-                // a chunk's bytes read and inflated per thread.
-                true => {
-                    let in_flight = (threads * lines).min(rows + 2 * lines);
-                    row * (rows + 2 * lines + rows + 2 * in_flight)
-                }
-                false => row * (3 * (rows + 2 * lines) + 2 * rows),
-            }
+            decode_bytes(plan, graph, &spans, i, reads[i]) * bytes(&plan.header_of(i).channels.list)
         })
         .sum();
     let held = window_rows(graph, &spans);
@@ -65,7 +69,133 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     let width = plan.computed.size.width() as u64;
     let waiting = 2 * crate::io::writer::IN_FLIGHT as u64;
     let encode = (5 + waiting) * s * width * bytes(&plan.header.channels.list);
-    decode + windows as u64 + encode + PROGRAM
+    let scratch = scratch(plan, graph, &spans) * threads;
+    decode + windows as u64 + encode + scratch + PROGRAM
+}
+
+/// Input `i`'s decode terms in samples of a pixel (times its bytes per
+/// pixel: the bound's first two terms), beside its window (`read`: the
+/// rows its first strip reads and the most a later one does).
+fn decode_bytes(
+    plan: &FramePlan,
+    graph: &Graph,
+    spans: &[usize],
+    i: usize,
+    read: (u64, u64),
+) -> u64 {
+    let width = plan.read[i].size.width() as u64;
+    let threads = rayon::current_num_threads() as u64;
+    let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
+    let rows = graph.input_node(i).map_or(s, |n| spans[n] as u64);
+    let lines = plan.levels[i].block.y() as u64;
+    let whole = !plan.regions.shared()
+        && graph
+            .input_node(i)
+            .is_some_and(|n| spans[n] >= plan.regions.rect(n).size.height());
+    // Chunks decoded apart from the strip (all but ZIP's: `decode::direct`),
+    // which becomes the input's window.
+    let direct = decodes_direct(plan, graph, i);
+    let apart = |rows: u64| if direct { 0 } else { rows + 2 * lines };
+    let in_flight = |rows: u64| (threads * lines).min(rows + 2 * lines);
+    let rows = match whole {
+        // Decoded once: its chunks, the strip built of them (unless they
+        // were decoded into it), and a chunk's bytes read and inflated per
+        // thread.
+        true if direct => 2 * in_flight(rows),
+        true => apart(rows) + rows + 2 * in_flight(rows),
+        // The first strip reads the rows of its span (the window then
+        // holds them); each later one only those its span gained: its
+        // chunks read, inflated and decoded, the strip built of them and
+        // the one in the channel.
+        // (A strip's rows at least where spans are strips: the last strip
+        // may be shorter, the bound is the steady state's.)
+        false => {
+            let (first, later) = read;
+            let later = later.max(s.min(first));
+            (3 * (later + 2 * lines) + 2 * later).max(apart(first) + 2 * in_flight(first))
+        }
+    };
+    rows * width
+}
+
+/// Whether input `i`'s chunks decode straight into its strips (as
+/// `decode::direct` finds when it reads them): ZIP, no subsampling, flat,
+/// its region inside its data window from a block's first row.
+fn decodes_direct(plan: &FramePlan, graph: &Graph, i: usize) -> bool {
+    let header = plan.header_of(i);
+    let window = plan.read[i];
+    let region = graph
+        .input_node(i)
+        .map_or(plan.computed, |n| plan.regions.rect(n));
+    let lines = plan.levels[i].block.y() as i32;
+    plan.deep[i].is_none()
+        && !crate::io::subsampling::any(header)
+        && matches!(header.compression, Compression::ZIP1 | Compression::ZIP16)
+        && window.position.x() <= region.position.x()
+        && window.end().x() >= region.end().x()
+        && window.position.y() <= region.position.y()
+        && (region.position.y() - window.position.y()) % lines == 0
+}
+
+/// Per input, the rows its first strip reads and the most any later strip
+/// reads (the pipeline's reads: each strip the rows of its input's span not
+/// read yet, `plan::input_spans`).
+fn read_rows(plan: &FramePlan, graph: &Graph) -> Vec<(u64, u64)> {
+    let mut done: Vec<std::ops::Range<i32>> = (0..plan.inputs.len())
+        .map(|i| {
+            let first = match graph.input_node(i) {
+                Some(n) if plan.regions.upward(n) => plan.regions.rect(n).end().y(),
+                Some(n) => plan.regions.rect(n).position.y(),
+                None => plan.computed.position.y(),
+            };
+            first..first
+        })
+        .collect();
+    let mut reads = vec![(0, 0); plan.inputs.len()];
+    for (k, rows) in plan.strips().enumerate() {
+        for (i, span) in plan.input_spans(graph, rows.end).into_iter().enumerate() {
+            let upward = graph.input_node(i).is_some_and(|n| plan.regions.upward(n));
+            let done = &mut done[i];
+            let read = match upward {
+                true => span.start.min(done.start)..done.start,
+                false => done.end..span.end.max(done.end),
+            };
+            *done = done.start.min(read.start)..done.end.max(read.end);
+            let (first, later) = &mut reads[i];
+            match k {
+                0 => *first = read.len() as u64,
+                _ => *later = (*later).max(read.len() as u64),
+            }
+        }
+    }
+    reads
+}
+
+/// The most scratch one band of a node holds (`Op::scratch`), over the
+/// nodes: a band of the most rows a node computes at once, a strip's span
+/// and the rows its own halo trailed by (a halo op's last strip).
+fn scratch(plan: &FramePlan, graph: &Graph, spans: &[usize]) -> u64 {
+    let width = |n: usize| plan.regions.rect(n).size.width();
+    graph
+        .nodes
+        .iter()
+        .enumerate()
+        .map(|(n, node)| match node {
+            Node::Op { op, inputs, .. } => {
+                let rows = band_rows(spans[n] + op.halo(), width(n));
+                let channels: Vec<&[_]> = inputs.iter().map(|&i| &plan.channels[i][..]).collect();
+                let widths: Vec<usize> = inputs.iter().map(|&i| width(i)).collect();
+                op.scratch(&Band {
+                    rows,
+                    width: width(n),
+                    inputs: &channels,
+                    widths: &widths,
+                }) as u64
+            }
+            Node::Input(_) => 0,
+        })
+        .max()
+        .unwrap_or(0)
 }
 
 /// Per node, the most rows its compose window holds at once: the most rows

@@ -4,7 +4,7 @@
 
 use super::declare::{input, params, Args, Operation};
 use super::layers::Selection;
-use crate::engine::graph::{GraphBuilder, NodeId, Op};
+use crate::engine::graph::{Band, GraphBuilder, NodeId, Op};
 use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::MORPH_RADIUS;
@@ -68,6 +68,12 @@ pub struct Morphology {
 impl Op for Morphology {
     fn halo(&self) -> usize {
         self.radius
+    }
+
+    /// An alpha's rows that the band's discs reach, as f32, and a row of
+    /// results.
+    fn scratch(&self, band: &Band) -> usize {
+        ((band.rows + 2 * self.radius) * band.widths[0] + band.width) * 4
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

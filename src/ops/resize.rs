@@ -9,7 +9,7 @@
 
 use super::crop::copy_moved;
 use super::declare::{choice, input, params, Args, Length, Operation, Value};
-use crate::engine::graph::{Carried, Display, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{Band, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::io::rows::{Rows, RowsMut, Samples};
 use crate::params::RESIZE_SCALE;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
@@ -451,6 +451,17 @@ impl Pass {
 }
 
 impl Op for Pass {
+    /// Across: an input row as f32, a row of values and of nearest columns,
+    /// and the columns' taps (shared by the bands: counted with each);
+    /// down: a row of sums.
+    fn scratch(&self, band: &Band) -> usize {
+        let taps = self.geometry.get().map_or(1, |g| 2 * g.radius as usize + 1);
+        match self.axis {
+            Axis::X => band.widths[0] * 4 + band.width * (12 + 48 + 12 * taps),
+            Axis::Y => band.width * 4 + taps * 4,
+        }
+    }
+
     fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
         // The length from the original's display window (the vertical
         // pass's second input: the first's is already resized across).

@@ -14,7 +14,7 @@
 use super::crop::copy_moved;
 use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::{nearest_only, Filter};
-use crate::engine::graph::{union, Carried, Display, GraphBuilder, NodeId, Op};
+use crate::engine::graph::{union, Band, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::io::rows::{Rows, RowsMut, Samples};
 use crate::params::{Bound, CENTER, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
@@ -358,6 +358,17 @@ fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
 }
 
 impl Op for Transform {
+    /// A row's taps (none for an exact map: a move copies, a flip takes
+    /// the nearest samples) and nearest samples, vectors grown by doubling
+    /// (twice the columns at most), and its values.
+    fn scratch(&self, band: &Band) -> usize {
+        let weights = match self.maps.get().is_some_and(|m| m.exact) {
+            true => 0,
+            false => std::mem::size_of::<Weights>(),
+        };
+        band.width * (2 * (weights + std::mem::size_of::<Option<usize>>()) + 4)
+    }
+
     fn display_window(&self, inputs: &[Display]) -> Result<Option<Display>, String> {
         let display = inputs[0].window;
         let first = self.maps.get_or_init(|| Maps::new(display, &self.params));

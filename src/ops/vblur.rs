@@ -5,7 +5,7 @@
 
 use super::declare::{input, params, Args, Operation, Value};
 use super::layers::Selection;
-use crate::engine::graph::Op;
+use crate::engine::graph::{Band, Op};
 use crate::engine::plan::Job;
 use crate::engine::prepass::max_over_rows;
 use crate::io::rows::{Rows, RowsMut};
@@ -140,6 +140,13 @@ impl Streak {
 impl Op for VectorBlur {
     fn halo(&self) -> usize {
         self.reach
+    }
+
+    /// Per colour channel the band's f32 sums and a row read, and the
+    /// vectors' rows.
+    fn scratch(&self, band: &Band) -> usize {
+        let names = self.layers.filtered(band.inputs[0]).len();
+        (names * (band.rows + 1) + 2) * band.widths[0] * 4
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

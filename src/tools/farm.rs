@@ -751,28 +751,29 @@ pub fn deadline_job(
     (name, description): (&str, String),
 ) -> Result<DeadlineArgs> {
     let frames = SteppedRange::new(&job.frames, job.chunk, "Deadline")?;
-    // Key=value lines: a value holds no line break; the CommandLine plugin
-    // splits Arguments at spaces outside double quotes.
+    // Key=value lines: a value holds no line break. The CommandLine plugin
+    // reads a task's `Progress: N%` lines (its own stdout handler) only from
+    // a command it runs in the worker's shell (`ShellExecute`: its
+    // RunProcess path does not capture them), so Arguments is the whole
+    // command line, each word quoted for that shell.
     let value = |text: &str| match text.contains(['\n', '\r']) {
         true => Err(Error::usage(format!(
             "{text:?} holds a line break, which a Deadline job file cannot carry"
         ))),
         false => Ok(text.to_string()),
     };
-    let argument = |arg: &str| match (
-        arg.contains('"'),
-        arg.is_empty() || arg.contains(char::is_whitespace),
-    ) {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "_./:=,+@%-".contains(c);
+    let argument = |arg: &str| match (arg.contains('"'), !arg.is_empty() && arg.chars().all(plain))
+    {
         (true, _) => Err(Error::usage(format!(
             "{arg:?} holds a double quote, which Deadline's Arguments cannot carry"
         ))),
-        (false, true) => value(&format!("<QUOTE>{arg}<QUOTE>")),
-        (false, false) => value(arg),
+        (false, true) => value(arg),
+        (false, false) => value(&format!("'{}'", arg.replace('\'', "'\\''"))),
     };
-    let mut arguments = task
-        .args
-        .iter()
-        .map(|a| argument(a))
+    let mut arguments = std::iter::once(exrcomp.to_string_lossy().as_ref())
+        .chain(task.args.iter().map(String::as_str))
+        .map(argument)
         .collect::<Result<Vec<_>>>()?;
     arguments.extend([
         "--frames".to_string(),
@@ -820,7 +821,7 @@ pub fn deadline_job(
         ("Executable".to_string(), value(&exrcomp.to_string_lossy())?),
         ("Arguments".to_string(), arguments.join(" ")),
         ("Shell".to_string(), "default".to_string()),
-        ("ShellExecute".to_string(), "False".to_string()),
+        ("ShellExecute".to_string(), "True".to_string()),
     ];
     Ok(DeadlineArgs {
         job_info: lines(&info),

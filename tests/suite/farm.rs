@@ -1102,29 +1102,6 @@ fn deadline_over(d: &Path, env: &[(&str, &str)], args: &[&str], output: &str) ->
     )
 }
 
-/// Arguments as the CommandLine plugin gives them to the executable:
-/// `<QUOTE>` a double quote, split at spaces outside quotes.
-fn deadline_arguments(line: &str) -> Vec<String> {
-    let line = line.replace("<QUOTE>", "\"");
-    let (mut args, mut word, mut quoted, mut any) = (Vec::new(), String::new(), false, false);
-    for c in line.chars() {
-        match c {
-            '"' => (quoted, any) = (!quoted, true),
-            ' ' if !quoted => {
-                if any || !word.is_empty() {
-                    args.push(std::mem::take(&mut word));
-                }
-                any = false;
-            }
-            c => word.push(c),
-        }
-    }
-    if any || !word.is_empty() {
-        args.push(word);
-    }
-    args
-}
-
 /// Deadline 10 job files for the CommandLine plugin: documented keys only,
 /// the frames and chunk size, the output for the Monitor, the settings as
 /// the job's environment, the needs as extra info; each chunk's command,
@@ -1202,16 +1179,23 @@ fn deadline_job_files_hold_documented_keys_and_chunks_match_a_local_run() {
         "{arguments}"
     );
     assert_eq!(arguments.matches("--resume").count(), 1, "{arguments}");
-    // Deadline's chunks of 1-7 by 3, each run with its tokens replaced.
+    // The plugin's stdout handler (`.*Progress: (\d+)%.*`) sees a task's
+    // output only when it runs it in the worker's shell.
+    assert_eq!(get(&plugin, "ShellExecute"), "True");
+    // Deadline's chunks of 1-7 by 3, each run with its tokens replaced, as
+    // the plugin runs it: `SHELL -c 'ARGUMENTS'`.
     for (start, end) in [(1, 3), (4, 6), (7, 7)] {
         let line = arguments
             .replace("<STARTFRAME>", &start.to_string())
-            .replace("<ENDFRAME>", &end.to_string());
-        let out = Command::new(get(&plugin, "Executable"))
-            .args(deadline_arguments(&line))
-            .output()
-            .unwrap();
+            .replace("<ENDFRAME>", &end.to_string())
+            .replace("<QUOTE>", "\"");
+        let out = Command::new("sh").arg("-c").arg(&line).output().unwrap();
         assert!(out.status.success(), "{line}: {}", stderr(&out));
+        let progress = stdout(&out);
+        assert!(
+            progress.lines().any(|l| l == "Progress: 100%"),
+            "{line}: no progress for the plugin's handler in\n{progress}"
+        );
     }
     local_over(d);
     for frame in 1..=7 {

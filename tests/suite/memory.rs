@@ -356,3 +356,49 @@ fn deep_tiled_peak_memory_does_not_grow_with_height() {
         (&["tall.####.exr"], "1", "1024x4096 deep tiled"),
     );
 }
+
+/// With 8 threads, `command` on a 2048x1024 `bg` plate peaks at or under
+/// the bound `--dry-run` gives, and the bound is within half again the
+/// peak (the farm asks that much of a worker).
+fn assert_bound_near_peak(command: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    generate_sequence(d, "p", "bg", 2048, 1024, "1");
+    let command = [command, &["--threads", "8"]].concat();
+    let bound = bound(d, &command, &["p.####.exr"], "1");
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let peak = peak_runs(d, &command, &["p.####.exr"], "1", 1, true);
+    let mib = |b: u64| b as f64 / (1 << 20) as f64;
+    assert!(
+        peak <= bound && bound as f64 <= 1.5 * peak as f64,
+        "{command:?}: peak {:.1} MiB, bound {:.1} MiB",
+        mib(peak),
+        mib(bound)
+    );
+}
+
+/// Defocus's sources, sums and difference rows, f64 per channel over each
+/// band and its halo on each thread, are in the bound (`Op::scratch`):
+/// without them 8 threads peaked at 131.5 MiB over a bound of 63.
+#[test]
+fn a_defocus_bound_holds_its_scratch_on_every_thread() {
+    assert_bound_near_peak(&[
+        "defocus",
+        "--max-radius",
+        "40",
+        "--focus",
+        "10",
+        "--scale",
+        "30",
+    ]);
+}
+
+/// A 30-degree turn spans most of its input per strip: the bound counts
+/// the span once, in the window, and decodes only the rows each strip
+/// adds (ZIP chunks straight into the strip); it had counted the span
+/// five times over, and the whole input twice more (a bound of 123 MiB
+/// for a peak of 68.7).
+#[test]
+fn a_turns_bound_counts_its_span_once() {
+    assert_bound_near_peak(&["transform", "--rotate", "30"]);
+}

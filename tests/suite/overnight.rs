@@ -413,19 +413,29 @@ fn interrupted_runs_leave_no_partial_output_and_resume_to_identical_results() {
 /// Two runs writing the same frames at once, each in its own PID namespace
 /// (as two containers are: both can be PID 1, so a PID does not tell their
 /// temporaries apart), both finish, and every frame is one complete
-/// writer's: the uninterrupted result, byte for byte.
+/// writer's: the uninterrupted result, byte for byte (its fingerprint
+/// with it). Then as two hosts on one NFS folder: each also in its own UTS
+/// namespace, with the same host name (and both PID 1: only the random
+/// part of a temporary's name tells them apart), then with two names.
 #[test]
 fn two_pid_namespaces_writing_the_same_frames_both_finish_with_whole_frames() {
     let namespaced = Command::new("unshare")
-        .args(["--pid", "--fork", "--mount-proc", "true"])
+        .args([
+            "--pid",
+            "--uts",
+            "--fork",
+            "--mount-proc",
+            "hostname",
+            "probe",
+        ])
         .stderr(Stdio::null())
         .status();
     if !namespaced.is_ok_and(|s| s.success()) {
         assert!(
             std::env::var_os("CI").is_none(),
-            "CI must be able to run unshare --pid for the two-container test"
+            "CI must be able to run unshare --pid --uts for the two-container test"
         );
-        skip("cannot make PID namespaces here (unshare --pid needs root)");
+        skip("cannot make PID and UTS namespaces here (unshare --pid --uts needs root)");
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -439,42 +449,56 @@ fn two_pid_namespaces_writing_the_same_frames_both_finish_with_whole_frames() {
             LineOrder::Increasing,
         );
     }
-    let args = |out: &str| {
+    // The run in its own PID namespace and, given a host name, its own UTS
+    // namespace named so; exrcomp is PID 1 there either way (exec'd by the
+    // namespace's first process).
+    let args = |out: &str, host: Option<&str>| {
         let mut command = Command::new("unshare");
+        command.args(["--pid", "--fork", "--mount-proc"]);
+        if let Some(host) = host {
+            command.args(["--uts", "sh", "-c", "hostname \"$0\" && exec \"$@\"", host]);
+        } else {
+            command.args(["sh", "-c", "exec \"$@\"", "sh"]);
+        }
         command
-            .args(["--pid", "--fork", "--mount-proc"])
             .arg(env!("CARGO_BIN_EXE_exrcomp"))
             .args(["transcode", s(&d.join("in.####.exr")), "-o"])
             .arg(d.join(out))
             .args(["-q", "--compression", "piz", "--strip-rows", "1"]);
         command
     };
-    let reference = within(args("ref/t.####.exr"), Duration::from_secs(300));
+    let reference = within(args("ref/t.####.exr", None), Duration::from_secs(300));
     assert_eq!(reference.code, Some(0), "{}", reference.stderr);
-    for round in 0..3 {
+    let rounds = [
+        ("two containers", [None, None]),
+        ("two hosts of one name", [Some("render"), Some("render")]),
+        ("two hosts", [Some("render-a"), Some("render-b")]),
+    ];
+    for (round, hosts) in rounds {
         let both: Vec<Ended> = std::thread::scope(|scope| {
-            let runs: Vec<_> = (0..2)
-                .map(|_| scope.spawn(|| within(args("o/t.####.exr"), Duration::from_secs(300))))
+            let runs: Vec<_> = hosts
+                .iter()
+                .map(|&host| {
+                    scope
+                        .spawn(move || within(args("o/t.####.exr", host), Duration::from_secs(300)))
+                })
                 .collect();
             runs.into_iter().map(|r| r.join().unwrap()).collect()
         });
         for ended in both {
-            assert_eq!(ended.code, Some(0), "round {round}: {}", ended.stderr);
+            assert_eq!(ended.code, Some(0), "{round}: {}", ended.stderr);
         }
         for frame in 1..=20 {
             let a = std::fs::read(frame_path(&d.join("o"), "t", frame)).unwrap();
             let b = std::fs::read(frame_path(&d.join("ref"), "t", frame)).unwrap();
-            assert!(
-                a == b,
-                "round {round}: frame {frame} is not one whole writer's"
-            );
+            assert!(a == b, "{round}: frame {frame} is not one whole writer's");
         }
         let left: Vec<_> = std::fs::read_dir(d.join("o"))
             .unwrap()
             .map(|e| e.unwrap().file_name())
             .filter(|n| n.to_string_lossy().starts_with('.'))
             .collect();
-        assert!(left.is_empty(), "round {round}: temporaries left: {left:?}");
+        assert!(left.is_empty(), "{round}: temporaries left: {left:?}");
     }
 }
 

@@ -11,13 +11,13 @@ pub use aperture::Aperture;
 
 use super::declare::{input, params, Operation};
 use super::layers::Selection;
-use crate::engine::graph::Op;
+use crate::engine::graph::{Band, Op};
 use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::{DEFOCUS_SCALE, FOCUS, MAX_RADIUS};
 use aperture::Footprints;
 use exr::meta::attribute::ChannelDescription;
-use sums::{sums, Sources, NEAR};
+use sums::{sums, Sources, NEAR, TILE};
 
 pub const DEFOCUS: Operation = Operation {
     name: "defocus",
@@ -134,6 +134,21 @@ impl Defocus {
 impl Op for Defocus {
     fn halo(&self) -> usize {
         self.max_radius
+    }
+
+    /// The sources of the band's rows and its halo (depth, radius and
+    /// layer, 4 bytes each, and k f64 values), its sums and difference rows
+    /// (k f64 per pixel each), a tile's sample lists (usize, grown by
+    /// doubling) and the footprints' tables.
+    fn scratch(&self, band: &Band) -> usize {
+        let (w, r) = (band.widths[0], self.max_radius);
+        let names = self.layers.filtered(band.inputs[0]).len();
+        let k = names + 1;
+        let sources = (band.rows + 2 * r) * w * (12 + 8 * k) + names * w * 4;
+        let sums = 2 * band.rows * (w + 1) * 8 * k + (w + 1) * 8 * k;
+        let lists = 2 * ((band.rows + 2 * r) * (TILE + 2 * r) + band.rows * TILE * 2) * 8;
+        let side = 2 * r + 1;
+        sources + sums + lists + side * side * 24 + w * 4
     }
 
     fn check(&self, inputs: &[&[ChannelDescription]]) -> Result<(), String> {

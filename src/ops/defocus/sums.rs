@@ -54,7 +54,7 @@ enum Class {
 
 /// Output columns per tile: a tile's sums, difference rows and prefix rows
 /// stay in a core's cache while its sources pass R times over them.
-const TILE: usize = 128;
+pub(super) const TILE: usize = 128;
 
 /// Per output pixel of `rows` × `columns`, k sums: of the weights, then of
 /// weight × colour, over the samples that reach it.
