@@ -75,17 +75,25 @@ pub fn lit(c: char, x: usize, y: usize) -> bool {
         .is_some_and(|&b| b == b'#')
 }
 
-/// The lit pixels of `text` drawn at `scale` (each font pixel a square of
-/// that side), from its top left; the one way the chart and the contact
-/// sheet draw text.
-pub fn pixels(text: &str, scale: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
-    text.chars().enumerate().flat_map(move |(n, c)| {
-        (0..HEIGHT * scale).flat_map(move |y| {
-            (0..WIDTH * scale)
-                .filter(move |&x| lit(c, x / scale, y / scale))
-                .map(move |x| (n * ADVANCE * scale + x, y))
-        })
-    })
+/// Whether pixel (x, y) of `text` drawn at `scale` (each font pixel a
+/// square of that side), from its top left, is lit: the one way text is
+/// drawn, by the burn-ins and slates a row at a time and through `pixels`.
+pub fn lit_in(text: &[char], x: usize, y: usize, scale: usize) -> bool {
+    let (gx, gy) = (x / scale, y / scale);
+    gy < HEIGHT
+        && text
+            .get(gx / ADVANCE)
+            .is_some_and(|&c| lit(c, gx % ADVANCE, gy))
+}
+
+/// The lit pixels of `text` drawn at `scale` (`lit_in`), from its top
+/// left; how the chart and the contact sheet draw text.
+pub fn pixels(text: &str, scale: usize) -> impl Iterator<Item = (usize, usize)> {
+    let chars: Vec<char> = text.chars().collect();
+    let (width, height) = (text_width(text) * scale, HEIGHT * scale);
+    (0..height)
+        .flat_map(move |y| (0..width).map(move |x| (x, y)))
+        .filter(move |&(x, y)| lit_in(&chars, x, y, scale))
 }
 
 /// Width in pixels of `text` at scale 1.

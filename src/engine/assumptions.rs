@@ -1,7 +1,8 @@
 //! Warnings, before a run, where users slip: inputs whose display windows
 //! differ, and what each operation assumes of its inputs
-//! (`Op::assumptions`). They are read from the first frame of each input;
-//! `commands::run_job` prints each once, unless `--quiet`.
+//! (`Op::assumptions`). They are read from the first frame of each input,
+//! opened by the run (`run::first_files`); `run::run_job` prints each once,
+//! unless `--quiet`.
 
 use super::frame_plan::plan_parts;
 use super::graph::{Display, Node};
@@ -14,12 +15,13 @@ use exr::meta::header::Header;
 
 /// The warnings for `job`, whose inputs were given as `texts`. None when a
 /// first frame cannot be read or decoded (the run reports that) or is made
-/// black.
-pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
+/// black. `files` is per input its first frame read and its file, opened
+/// by the run (`run::first_files`).
+pub fn warnings(job: &Job, texts: &[String], files: &[Option<(i64, ExrFile)>]) -> Vec<String> {
     let Some(first) = job.frames.first() else {
         return Vec::new();
     };
-    let mut warnings = assumed(job, texts, first);
+    let mut warnings = assumed(job, texts, first, files);
     if job.all_parts {
         warnings.extend(carried_parts(job, first));
     }
@@ -28,14 +30,19 @@ pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
 
 /// The warnings of the first frame's inputs (with `--all-parts`, of the
 /// first part).
-fn assumed(job: &Job, texts: &[String], first: &FrameSources) -> Vec<String> {
+fn assumed(
+    job: &Job,
+    texts: &[String],
+    first: &FrameSources,
+    files: &[Option<(i64, ExrFile)>],
+) -> Vec<String> {
     let headers: Option<Vec<Header>> = (0..job.inputs.len())
         .map(|i| {
-            let Source::Frame(frame) = first.inputs[i] else {
+            let (read, file) = files.get(i)?.as_ref()?;
+            if first.inputs[i] != Source::Frame(*read) {
                 return None;
-            };
-            let file = ExrFile::open(&job.inputs[i].path(frame), None).ok()?;
-            let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
+            }
+            let part = choose_part(file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
             // A part the run cannot decode is its error alone.
             file.check_codec(part).ok()?;
             Some(file.header(part).clone())

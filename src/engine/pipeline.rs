@@ -173,15 +173,20 @@ fn stage_thread(stage: Stage, body: impl FnOnce() -> Result<()>) -> Result<()> {
 
 /// Runs `job`, reporting each frame to `events`, and returns where its CPU
 /// time went (`stage_time.rs`). Stops early, without an error, when an
-/// interruption is requested (`interrupt::requested`).
-pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
+/// interruption is requested (`interrupt::requested`). `first` is the
+/// first frame's plans (`plan_parts`) when the caller made them already.
+pub fn run(job: &Job, events: &impl Events, first: Option<Vec<FramePlan>>) -> Result<StageTimes> {
     let start = StageTimes::now();
     let (decoded_tx, decoded_rx) = bounded::<Msg<Decoded>>(CHANNEL_STRIPS);
     let (composed_tx, composed_rx) = bounded::<Msg<Composed>>(CHANNEL_STRIPS);
     let (encoded_tx, encoded_rx) = bounded::<Msg<Encoded>>(CHANNEL_STRIPS);
     let results = std::thread::scope(|scope| {
         let stages = [
-            scope.spawn(|| stage_thread(Stage::Decode, || decode_stage(job, events, decoded_tx))),
+            scope.spawn(|| {
+                stage_thread(Stage::Decode, || {
+                    decode_stage(job, events, first, decoded_tx)
+                })
+            }),
             scope.spawn(|| {
                 stage_thread(Stage::Compose, || {
                     compose_stage(job, events, decoded_rx, composed_tx)
@@ -205,8 +210,16 @@ pub fn run(job: &Job, events: &impl Events) -> Result<StageTimes> {
     Ok(StageTimes::now().since(&start))
 }
 
-fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Result<()> {
+/// Decodes `job`'s frames in order; `first`, the first frame's plans when
+/// the run made them already (for its slate), is not planned again.
+fn decode_stage(
+    job: &Job,
+    events: &impl Events,
+    mut first: Option<Vec<FramePlan>>,
+    tx: Sender<Msg<Decoded>>,
+) -> Result<()> {
     for sources in &job.frames {
+        let planned = first.take();
         if interrupt::requested() {
             break;
         }
@@ -216,7 +229,7 @@ fn decode_stage(job: &Job, events: &impl Events, tx: Sender<Msg<Decoded>>) -> Re
             job.frame_label(sources.frame),
         );
         match frame_work(&output, label, || {
-            decode_frame(job, events, sources, &tx, &mut begun)
+            decode_frame(job, events, sources, planned, &tx, &mut begun)
         }) {
             Ok(true) => {}
             // Downstream has stopped (and reports why) or we were interrupted.
@@ -245,10 +258,14 @@ fn decode_frame(
     job: &Job,
     events: &impl Events,
     sources: &FrameSources,
+    planned: Option<Vec<FramePlan>>,
     tx: &Sender<Msg<Decoded>>,
     begun: &mut bool,
 ) -> Result<bool> {
-    let plans = plan_parts(job, sources)?;
+    let plans = match planned {
+        Some(plans) => plans,
+        None => plan_parts(job, sources)?,
+    };
     if job.resume {
         match resumed(job, &plans[0]) {
             Resumed::Kept => {

@@ -212,15 +212,9 @@ impl Label {
         if dx >= self.width || dy >= self.height {
             return None;
         }
-        let (gx, gy) = (
-            (dx / self.scale).checked_sub(1),
-            (dy / self.scale).checked_sub(1),
-        );
-        let lit = gx.zip(gy).is_some_and(|(gx, gy)| {
-            let c = self.text.get(gx / font::ADVANCE);
-            c.is_some_and(|&c| gy < font::HEIGHT && font::lit(c, gx % font::ADVANCE, gy))
-        });
-        Some(lit)
+        // The glyphs start one font pixel in from the box's corner.
+        let inside = dx.checked_sub(self.scale).zip(dy.checked_sub(self.scale));
+        Some(inside.is_some_and(|(x, y)| font::lit_in(&self.text, x, y, self.scale)))
     }
 }
 
@@ -236,15 +230,17 @@ mod tests {
             .own_attributes
             .other
             .insert("owner".into(), AttributeValue::Text("studio".into()));
-        let fields = Fields {
-            frame: 7,
-            header: &header,
-            file: None,
-            output: Path::new("out/x.0007.jpg"),
-        };
-        assert_eq!(burn.text(&fields), "SH010 0007 studio");
+        fn fields(header: &Header) -> Fields<'_> {
+            Fields {
+                frame: 7,
+                header,
+                file: None,
+                output: Path::new("out/x.0007.jpg"),
+            }
+        }
+        assert_eq!(burn.text(&fields(&header)), "SH010 0007 studio");
         let burn = BurnIn::parse("{output} {timecode} {file}", Corner::TopRight).unwrap();
-        assert_eq!(burn.text(&fields), "x.0007.jpg - -");
+        assert_eq!(burn.text(&fields(&header)), "x.0007.jpg - -");
         // --timecode's attribute, set among the others, is the frame's.
         let code = exr::meta::attribute::TimeCode {
             hours: 1,
@@ -254,13 +250,7 @@ mod tests {
             .own_attributes
             .other
             .insert("timeCode".into(), AttributeValue::TimeCode(code));
-        let fields = Fields {
-            frame: 7,
-            header: &header,
-            file: None,
-            output: Path::new("out/x.0007.jpg"),
-        };
-        assert_eq!(burn.text(&fields), "x.0007.jpg 01:00:00:00 -");
+        assert_eq!(burn.text(&fields(&header)), "x.0007.jpg 01:00:00:00 -");
         assert!(BurnIn::parse("{shot}", Corner::TopLeft).is_err());
         assert!(BurnIn::parse("{frame", Corner::TopLeft).is_err());
         assert!(BurnIn::parse("{frame:x}", Corner::TopLeft).is_err());

@@ -151,14 +151,8 @@ pub fn input_job(
     }
     let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
-    let luminance = luminance_inputs(
-        &inputs,
-        &parts,
-        layers,
-        run.write.all_parts,
-        &graph,
-        &resolved.frames,
-    );
+    let first = first_files(&inputs, &resolved.frames);
+    let luminance = luminance_inputs(&first, &parts, layers, run.write.all_parts, &graph);
     let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
     let reads = Job {
         merged: vec![Vec::new(); inputs.len()],
@@ -179,7 +173,7 @@ pub fn input_job(
         ..written_as(reads, run, attributes, media, slate)
     };
     let summary = Summary {
-        warnings: crate::engine::assumptions::warnings(&job, texts),
+        warnings: crate::engine::assumptions::warnings(&job, texts, &first),
         named: frames.len(),
         skipped: resolved.skipped,
         replaced: resolved.replaced,
@@ -207,33 +201,44 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
     Ok(())
 }
 
-/// Per input, the luminance weights of its first frame when the job has
-/// operations and that frame is luminance/chroma or luminance only (with
-/// `--all-parts`, any part of it: the conversion passes RGB parts as they
-/// are): the operations read it as RGB. A frame that cannot be read is left
-/// to the run.
-fn luminance_inputs(
-    inputs: &[FramePattern],
-    parts: &[Option<String>],
-    layers: &LayerArgs,
-    all_parts: bool,
-    graph: &Graph,
-    frames: &[FrameSources],
-) -> Vec<Option<[f32; 3]>> {
-    if !graph.nodes.iter().any(|n| matches!(n, Node::Op { .. })) {
-        return vec![None; inputs.len()];
-    }
+/// Per input, the first frame it reads (not made black) and its file, open:
+/// opened once for what is read of it before the run (the luminance
+/// weights, the assumptions' warnings). None where it cannot be read (the
+/// run reports that) or every frame is black.
+fn first_files(inputs: &[FramePattern], frames: &[FrameSources]) -> Vec<Option<(i64, ExrFile)>> {
     (0..inputs.len())
         .map(|i| {
             let frame = frames.iter().find_map(|f| match f.inputs[i] {
                 Source::Frame(frame) => Some(frame),
                 Source::Black(_) => None,
             })?;
-            let file = ExrFile::open(&inputs[i].path(frame), None).ok()?;
+            Some((frame, ExrFile::open(&inputs[i].path(frame), None).ok()?))
+        })
+        .collect()
+}
+
+/// Per input, the luminance weights of its first frame when the job has
+/// operations and that frame is luminance/chroma or luminance only (with
+/// `--all-parts`, any part of it: the conversion passes RGB parts as they
+/// are): the operations read it as RGB. A frame that cannot be read is left
+/// to the run.
+fn luminance_inputs(
+    first: &[Option<(i64, ExrFile)>],
+    parts: &[Option<String>],
+    layers: &LayerArgs,
+    all_parts: bool,
+    graph: &Graph,
+) -> Vec<Option<[f32; 3]>> {
+    if !graph.nodes.iter().any(|n| matches!(n, Node::Op { .. })) {
+        return vec![None; first.len()];
+    }
+    (0..first.len())
+        .map(|i| {
+            let (_, file) = first[i].as_ref()?;
             let read = match all_parts {
                 true => 0..file.meta.headers.len(),
                 false => {
-                    let part = choose_part(&file, parts[i].as_deref(), layers.view.as_deref());
+                    let part = choose_part(file, parts[i].as_deref(), layers.view.as_deref());
                     part.ok().map(|p| p..p + 1)?
                 }
             };
@@ -382,13 +387,23 @@ fn slate_frame(
     Ok(Some(SlateFrame { frame, range }))
 }
 
-/// The job writing `job`'s slate: a black frame of its first frame's
-/// display window, in its output's format, with the job's metadata.
-fn slate_job(job: &Job) -> Result<Option<Job>> {
-    let Some(slate) = &job.slate else {
+/// The plans of `job`'s first frame when the run needs them before the
+/// pipeline (for its slate), which then does not plan that frame again.
+/// Without a slate the pipeline plans it: its errors are that frame's.
+fn first_plans(job: &Job) -> Result<Option<Vec<FramePlan>>> {
+    match (&job.slate, job.frames.first()) {
+        (Some(_), Some(first)) => Ok(Some(plan_parts(job, first)?)),
+        _ => Ok(None),
+    }
+}
+
+/// The job writing `job`'s slate, from its first frame's `plans`: a black
+/// frame of its display window, in its output's format, with the job's
+/// metadata.
+fn slate_job(job: &Job, plans: Option<&Vec<FramePlan>>) -> Result<Option<Job>> {
+    let (Some(slate), Some(plans)) = (&job.slate, plans) else {
         return Ok(None);
     };
-    let plans = plan_parts(job, &job.frames[0])?;
     let header = &plans[0].header;
     let display = header.shared_attributes.display_window;
     let set: Vec<&str> = job.attributes.set.iter().map(|a| a.name.as_str()).collect();
@@ -494,7 +509,8 @@ fn parse_compression(run: &RunArgs) -> Result<Option<Compression>> {
 /// interruption into the run's error (and exit code). A dry run plans every
 /// frame and gives what it found.
 pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Result<Option<DryRun>> {
-    let slate = slate_job(job)?;
+    let mut first = first_plans(job)?;
+    let slate = slate_job(job, first.as_ref())?;
     let (reads, mut writes) = job.files();
     writes.extend(slate.iter().flat_map(|slate| slate.files().1));
     refuse_overwriting(reads.iter().cloned(), writes.iter().cloned())?;
@@ -507,7 +523,10 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
         let (mut bound, mut others) = (0, Vec::new());
         let media = job.media.as_ref().map(|r| r.media.format);
         for sources in &job.frames {
-            let plans = plan_parts(job, sources)?;
+            let plans = match first.take() {
+                Some(plans) => plans,
+                None => plan_parts(job, sources)?,
+            };
             if fingerprint::made_by(&plans[0].output, media, &plans[0].fingerprint) == Some(false) {
                 others.push(plans[0].output.clone());
             }
@@ -540,7 +559,7 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
     if let Some(slate) = &slate {
         write_slate(slate, label, run)?;
     }
-    let (report, summary) = run_with_progress(job, label, run, summary)?;
+    let (report, summary) = run_with_progress(job, label, run, summary, first)?;
     planted_delay();
     report.finish(&summary);
     if summary.interrupted {
@@ -591,7 +610,7 @@ fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
         progress: run.progress.map(|_| FarmLog::Frames),
         ..run.clone()
     };
-    let (_, summary) = run_with_progress(slate, label, &quiet, Summary::default())?;
+    let (_, summary) = run_with_progress(slate, label, &quiet, Summary::default(), None)?;
     if summary.interrupted {
         return Err(Error::new(
             Kind::Interrupted,
@@ -705,11 +724,14 @@ fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
     })
 }
 
+/// Runs `job` through the pipeline, its progress reported as `run` asks;
+/// `first`, its first frame's plans if made already, is handed on.
 pub fn run_with_progress(
     job: &Job,
     label: &str,
     run: &RunArgs,
     summary: Summary,
+    first: Option<Vec<FramePlan>>,
 ) -> Result<(Report, Summary)> {
     let folders: BTreeSet<PathBuf> = job
         .frames
@@ -731,7 +753,7 @@ pub fn run_with_progress(
         warned: std::sync::Once::new(),
         summary: Mutex::new(summary),
     };
-    let stages = pipeline::run(job, &events)?;
+    let stages = pipeline::run(job, &events, first)?;
     let mut summary = events
         .summary
         .into_inner()

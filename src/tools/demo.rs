@@ -245,7 +245,7 @@ fn write_plates(
             ..plates.clone()
         };
         let label = format!("writing {name}");
-        let (report, _) = run_with_progress(&job, &label, &progress, Summary::default())?;
+        let (report, _) = run_with_progress(&job, &label, &progress, Summary::default(), None)?;
         report.clear();
         talk(format!(
             "wrote {} ({}, {width}x{height} half RGBA + {extra})",
