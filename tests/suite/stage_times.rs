@@ -1,5 +1,5 @@
 //! The `--json` summary says where the run's CPU time went, stage by stage
-//! (src/engine/stage_time.rs), and the figures add up to what the kernel
+//! (src/stage_time.rs), and the figures add up to what the kernel
 //! charged the process.
 
 use crate::common::*;
