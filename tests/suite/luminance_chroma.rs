@@ -268,6 +268,29 @@ fn sample(name: &str) -> std::path::PathBuf {
     shipped_images().join("Generated").join(name)
 }
 
+/// `input` transcoded to `coded` with `compression`, and that back to
+/// uncompressed `back`.
+fn transcode_and_back(input: &Path, coded: &Path, compression: &str, back: &Path) {
+    ok(&[
+        "transcode",
+        s(input),
+        "-o",
+        s(coded),
+        "--compression",
+        compression,
+        "-q",
+    ]);
+    ok(&[
+        "transcode",
+        s(coded),
+        "-o",
+        s(back),
+        "--compression",
+        "none",
+        "-q",
+    ]);
+}
+
 #[test]
 fn subsampled_channels_are_carried_bit_for_bit_through_every_lossless_compression() {
     let input = sample("YcaOffset.exr");
@@ -277,24 +300,7 @@ fn subsampled_channels_are_carried_bit_for_bit_through_every_lossless_compressio
     for compression in ["none", "rle", "zips", "zip", "piz", "pxr24"] {
         let coded = dir.path().join(format!("{compression}.exr"));
         let back = dir.path().join(format!("{compression}-none.exr"));
-        ok(&[
-            "transcode",
-            s(&input),
-            "-o",
-            s(&coded),
-            "--compression",
-            compression,
-            "-q",
-        ]);
-        ok(&[
-            "transcode",
-            s(&coded),
-            "-o",
-            s(&back),
-            "--compression",
-            "none",
-            "-q",
-        ]);
+        transcode_and_back(&input, &coded, compression, &back);
         let again = raw(&back);
         assert_eq!((again.x, again.y), (original.x, original.y));
         assert_eq!(again.channels, original.channels, "{compression}");
@@ -312,24 +318,7 @@ fn b44_of_subsampled_channels_is_written_and_read_back() {
     let dir = tempfile::tempdir().unwrap();
     for compression in ["b44", "b44a"] {
         let (coded, back) = (dir.path().join("out.exr"), dir.path().join("back.exr"));
-        ok(&[
-            "transcode",
-            s(&input),
-            "-o",
-            s(&coded),
-            "--compression",
-            compression,
-            "-q",
-        ]);
-        ok(&[
-            "transcode",
-            s(&coded),
-            "-o",
-            s(&back),
-            "--compression",
-            "none",
-            "-q",
-        ]);
+        transcode_and_back(&input, &coded, compression, &back);
         let again = raw(&back);
         assert_eq!((again.x, again.y), (original.x, original.y));
         for (name, (sampling, samples)) in &original.channels {

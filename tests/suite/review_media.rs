@@ -4,10 +4,7 @@
 //! linear values computed here; the burn-in's pixels against glyphs drawn
 //! here by hand; determinism, temp-and-rename, --resume and refusals.
 
-use crate::common::{
-    missing, peer, read_image, run, s, stderr, succeed, write_image, Img, Samples,
-};
-use exr::prelude::{Compression, LineOrder};
+use crate::common::{missing, peer, read_image, run, s, stderr, succeed, write_flat, Img, Samples};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
@@ -57,19 +54,6 @@ fn plate(path: &Path, alpha: bool) {
         channels.insert("A".to_string(), Samples::F32(values));
     }
     write_flat(path, (W, H), channels);
-}
-
-/// A W x H image of `channels` at the origin, written as a ZIP file.
-fn write_flat(path: &Path, (width, height): (usize, usize), channels: BTreeMap<String, Samples>) {
-    let img = Img {
-        x: 0,
-        y: 0,
-        width,
-        height,
-        display: (width, height),
-        channels,
-    };
-    write_image(path, &img, Compression::ZIP16, LineOrder::Increasing);
 }
 
 /// A python with Pillow (`$EXRCOMP_PILLOW_PYTHON`, else `python3`), or

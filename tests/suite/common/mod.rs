@@ -429,6 +429,23 @@ pub fn write_image(path: &Path, img: &Img, compression: Compression, line_order:
     write_encoded(path, img, encoding);
 }
 
+/// A W x H image of `channels` at the origin, written as a ZIP file.
+pub fn write_flat(
+    path: &Path,
+    (width, height): (usize, usize),
+    channels: std::collections::BTreeMap<String, Samples>,
+) {
+    let img = Img {
+        x: 0,
+        y: 0,
+        width,
+        height,
+        display: (width, height),
+        channels,
+    };
+    write_image(path, &img, Compression::ZIP16, LineOrder::Increasing);
+}
+
 /// A single-part file stored as `encoding` says (scanlines or tiles).
 pub fn write_encoded(path: &Path, img: &Img, encoding: Encoding) {
     let layer = layer(img, LayerAttributes::default(), encoding);
