@@ -23,6 +23,7 @@ pub mod stereo;
 pub mod testing;
 pub mod transform;
 pub mod vblur;
+pub mod warp;
 pub mod zmerge;
 
 use declare::Operation;
