@@ -165,10 +165,12 @@ mod tests {
         let [ia, ib, ic, id, _, _] = map.0;
         assert!((ia - c).abs() < 1e-6 && (ib + s).abs() < 1e-6);
         assert!((ic - s).abs() < 1e-6 && (id - c).abs() < 1e-6);
-        // The centre maps to itself.
+        // Pixel (23, 17)'s centre, half a pixel up and left of the turn's
+        // centre, is turned back by 45° about it.
         let (u, v) = map.apply(23, 17);
+        let back = 24.0 - 0.5 * std::f32::consts::SQRT_2;
         assert!(
-            (u - 23.5).abs() < 1e-5 && (v - 17.5).abs() < 1e-5,
+            (u - back).abs() < 1e-5 && (v - 18.0).abs() < 1e-5,
             "{u} {v}"
         );
     }
