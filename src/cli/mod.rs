@@ -45,7 +45,7 @@ pub struct Cli {
     /// Worker threads (default: one per core).
     /// (At most a farm worker's: a local run is held to this machine's
     /// cores after parsing, `refuse_local_threads`.)
-    #[arg(long, global = true, help_heading = "Run control", allow_negative_numbers = true, value_parser = crate::params::parse_farm_threads)]
+    #[arg(long, global = true, help_heading = crate::run::settings::RUN_CONTROL, allow_negative_numbers = true, value_parser = crate::params::parse_farm_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
