@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# CI smoke test: fuzzes each target (read_exr, then run_job) for ~25 s
-# (FUZZ_SECONDS to change), about a minute in all.
+# CI smoke test: fuzzes each target (read_exr, run_job, then read_foreign) for
+# ~25 s (FUZZ_SECONDS to change), about a minute and a half in all.
 # Exits 0 with a message when cargo-fuzz or a toolchain able to build the targets
 # is missing; non-zero only when the fuzzer itself finds a crash, timeout or OOM.
 set -uo pipefail
@@ -32,7 +32,7 @@ trap 'rm -rf "$corpus"' EXIT
 find "$corpus" -type f -size +256k -delete
 
 failed=0
-for target in read_exr run_job; do
+for target in read_exr run_job read_foreign; do
     # Each target grows its own copy of the seeds.
     work="$corpus/$target"
     mkdir "$work"

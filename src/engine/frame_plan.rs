@@ -586,8 +586,13 @@ fn output_header(
     let files = (opened.inputs.iter().map(Arc::as_ref)).chain(merged.map(|(f, _)| f.as_ref()));
     let fingerprint = fingerprint::of_frame(job, opened.sources, files);
     fingerprint::stamp(&mut header, &fingerprint);
-    if let Some(compression) = job.compression {
-        header.compression = compression;
+    let foreign = (opened.header_file(job)).is_some_and(|f| f.format().is_some());
+    match job.compression {
+        Some(compression) => header.compression = compression,
+        // A DPX or Cineon header input is uncompressed: written as ZIP, as
+        // oiiotool writes it, not as an uncompressed EXR larger than it.
+        None if foreign => header.compression = exr::prelude::Compression::ZIP16,
+        None => {}
     }
     header.blocks = output_blocks(job, &header);
     header.line_order = LineOrder::Increasing;

@@ -15,6 +15,7 @@ mod depth_and_motion;
 mod diffrender_and_zmerge;
 mod farm;
 mod first_run;
+mod foreign_inputs;
 mod grades;
 mod hostile;
 mod job_files;
