@@ -22,9 +22,7 @@ use ocio::{
     TransformDirection, ViewType,
 };
 
-/// The config without `--config` or `$OCIO`: OCIO's ACES CG config as the
-/// crate embeds it (v4.0.0, ACES 2.0; PyPI's 2.6 names v5.0.0 so).
-pub const BUILTIN: &str = "ocio://cg-config-latest";
+pub use super::BUILTIN_COLOUR_CONFIG as BUILTIN;
 
 /// The config: `--config FILE|ocio://NAME`, else `$OCIO` when set and not
 /// empty, else the built-in one (not the crate's `create_from_env`, which

@@ -103,7 +103,7 @@ impl ColourConfig {
         match std::env::var("OCIO").ok().filter(|v| !v.is_empty()) {
             Some(name) if name.starts_with("ocio://") => ColourConfig::Name(name),
             Some(file) => ColourConfig::File(absolute(cwd, &file)),
-            None => ColourConfig::Name(crate::ops::colour::BUILTIN.to_string()),
+            None => ColourConfig::Name(crate::ops::BUILTIN_COLOUR_CONFIG.to_string()),
         }
     }
 
