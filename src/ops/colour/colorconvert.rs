@@ -18,7 +18,16 @@ pub const COLORCONVERT: Operation = Operation {
         let config = super::config(p.config.as_ref())?;
         let transform = super::conversion(&config, &p.from, &p.to)?;
         let processor = super::processor(&config, transform)?;
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        // A named transform's destination is no colour space of the config.
+        let to = config
+            .get_color_space(&p.to)
+            .map(|cs| cs.name().to_string());
+        let edits = match to {
+            Some(to) => super::metadata::destination(&config, &to),
+            None => super::metadata::written(None),
+        };
+        let map = super::Ocio::new(&processor).writing(edits);
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     measure: None,
 };

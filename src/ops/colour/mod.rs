@@ -9,12 +9,14 @@
 pub mod cdl;
 pub mod colorconvert;
 pub mod filetransform;
+pub mod metadata;
 pub mod ociodisplay;
 pub mod ociolook;
 
 use super::declare::{Args, FileName};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
+use crate::io::attributes::Edit;
 use crate::io::parts::unknown;
 use ocio::config::NamedTransform;
 use ocio::{
@@ -182,15 +184,46 @@ pub fn processor(config: &Config, transform: Transform) -> Result<Processor, Str
 
 /// An OCIO CPU processor as a colour map: built once per command, shared by
 /// every band of the node (the engine runs them on the pool at once), with
-/// the warnings its building owes the run.
-pub struct Ocio(CpuProcessor, String, Vec<String>);
+/// the warnings its building owes the run and the attributes it writes.
+pub struct Ocio {
+    cpu: CpuProcessor,
+    id: String,
+    warnings: Vec<String>,
+    edits: Vec<Edit>,
+}
+
+impl Ocio {
+    pub fn new(processor: &Processor) -> Self {
+        Ocio {
+            cpu: processor.default_cpu_processor(),
+            id: processor.cache_id(),
+            warnings: Vec::new(),
+            edits: Vec::new(),
+        }
+    }
+
+    /// With warnings for the run to print once.
+    pub fn warned(self, warnings: Vec<String>) -> Self {
+        Ocio { warnings, ..self }
+    }
+
+    /// Writing the destination's colour attributes (`metadata.rs`).
+    pub fn writing(self, edits: Vec<Edit>) -> Self {
+        Ocio { edits, ..self }
+    }
+}
 
 /// A processor's maths, as its cache id (a hash of its ops and their
-/// values): what a frame's fingerprint records, so that a config with the
-/// same names and other maths makes other frames.
+/// values), and the attributes written: what a frame's fingerprint
+/// records, so that a config with the same names and other maths makes
+/// other frames.
 impl std::fmt::Debug for Ocio {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Ocio({})", self.1)
+        write!(f, "Ocio({})", self.id)?;
+        match self.edits.is_empty() {
+            true => Ok(()),
+            false => write!(f, " writing {:?}", self.edits),
+        }
     }
 }
 
@@ -200,7 +233,11 @@ impl ColourMap for Ocio {
     }
 
     fn warnings(&self) -> Vec<String> {
-        self.2.clone()
+        self.warnings.clone()
+    }
+
+    fn attributes(&self) -> Vec<Edit> {
+        self.edits.clone()
     }
 
     fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
@@ -208,39 +245,22 @@ impl ColourMap for Ocio {
         // (the node's alpha, if any, passes untouched).
         let [r, g, b] = rgb;
         let mut pixels: Vec<[f32; 4]> = (0..r.len()).map(|i| [r[i], g[i], b[i], 1.0]).collect();
-        self.0.apply_pixels(&mut pixels);
+        self.cpu.apply_pixels(&mut pixels);
         for (i, [pr, pg, pb, _]) in pixels.into_iter().enumerate() {
             (r[i], g[i], b[i]) = (pr, pg, pb);
         }
     }
 }
 
-/// The node applying `processor` to the selected layers' colour, divided by
+/// The node applying `map` to the selected layers' colour, divided by
 /// alpha first and multiplied again after unless `no_unpremult`.
 pub fn add(
-    processor: Processor,
+    map: Ocio,
     no_unpremult: bool,
     args: &Args,
     graph: &mut GraphBuilder,
     inputs: &[NodeId],
 ) -> NodeId {
-    add_warned(processor, Vec::new(), no_unpremult, args, graph, inputs)
-}
-
-/// `add`, with warnings for the run to print once.
-pub fn add_warned(
-    processor: Processor,
-    warnings: Vec<String>,
-    no_unpremult: bool,
-    args: &Args,
-    graph: &mut GraphBuilder,
-    inputs: &[NodeId],
-) -> NodeId {
-    let map = Ocio(
-        processor.default_cpu_processor(),
-        processor.cache_id(),
-        warnings,
-    );
     graph.add(Colour::new(map, !no_unpremult, &args.layers), inputs)
 }
 
@@ -651,12 +671,7 @@ mod tests {
         ];
         let before = rgb.clone();
         let processor = config.get_processor("ACEScg", "ACEScct").unwrap();
-        Ocio(
-            processor.default_cpu_processor(),
-            processor.cache_id(),
-            Vec::new(),
-        )
-        .apply(&mut rgb);
+        Ocio::new(&processor).apply(&mut rgb);
         for i in 0..3 {
             let mut pixel = [before[0][i], before[1][i], before[2][i]];
             cpu.apply_rgb(&mut pixel);

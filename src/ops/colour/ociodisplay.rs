@@ -41,7 +41,14 @@ pub const OCIODISPLAY: Operation = Operation {
                 pipeline.get_processor(&config).map_err(|e| e.to_string())?
             }
         };
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let edits = match p.inverse {
+            true => super::metadata::destination(&config, &from),
+            false => {
+                super::metadata::destination(&config, &display_space(&config, &display, &view))
+            }
+        };
+        let map = super::Ocio::new(&processor).writing(edits);
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };
@@ -66,5 +73,15 @@ params! {
         config: Option<FileName>,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
+    }
+}
+
+/// The colour space a display's view ends in: the view's, or the display's
+/// own where the view says `<USE_DISPLAY_NAME>` (OCIO 2's shared views).
+fn display_space(config: &ocio::Config, display: &str, view: &str) -> String {
+    let space = config.display_view_color_space_name(display, view);
+    match space.eq_ignore_ascii_case(ocio::types::OCIO_VIEW_USE_DISPLAY_NAME) {
+        true => display.to_string(),
+        false => space.to_string(),
     }
 }

@@ -21,7 +21,10 @@ pub const OCIOLOOK: Operation = Operation {
         let mut transform = LookTransform::new(&from, &to, &super::looks(&config, &p.look)?);
         transform.direction = super::direction(p.inverse);
         let processor = super::processor(&config, Transform::Look(transform))?;
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let written = if p.inverse { &from } else { &to };
+        let map =
+            super::Ocio::new(&processor).writing(super::metadata::destination(&config, written));
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };

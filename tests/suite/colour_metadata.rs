@@ -1,0 +1,155 @@
+//! The colour a file says it is in: the `colorInteropID` and
+//! `chromaticities` a conversion writes (its destination's, as the config
+//! names it: PyPI's opencolorio 2.6 is the oracle), `--from auto` reading
+//! them, and `--context` variables (specs/colour-library.md, "Colour
+//! metadata").
+
+use crate::colour::python;
+use crate::common::*;
+use exr::meta::attribute::{AttributeValue, Chromaticities, Text};
+use exr::meta::header::Header;
+use exr::prelude::WritableImage;
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Command;
+
+const V4: &str = "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5";
+const V1: &str = "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1";
+
+/// OpenEXR's Rec. 709 (ITU-R BT.709, D65), as files carry it.
+fn rec709() -> Chromaticities {
+    chromaticities([0.64, 0.33, 0.3, 0.6, 0.15, 0.06, 0.3127, 0.329])
+}
+
+fn chromaticities(v: [f32; 8]) -> Chromaticities {
+    use exr::math::Vec2;
+    Chromaticities {
+        red: Vec2(v[0], v[1]),
+        green: Vec2(v[2], v[3]),
+        blue: Vec2(v[4], v[5]),
+        white: Vec2(v[6], v[7]),
+    }
+}
+
+/// A small RGBA float image, with a `diffuse` layer, at `path` with the colour attributes given.
+fn tagged(path: &Path, chroma: Option<Chromaticities>, interop: Option<&str>) {
+    let mut channels = BTreeMap::new();
+    let names = ["A", "B", "G", "R", "diffuse.B", "diffuse.G", "diffuse.R"];
+    for (c, name) in names.iter().enumerate() {
+        let values = (0..16).map(|i| 0.05 * (i + c) as f32).collect();
+        channels.insert(name.to_string(), Samples::F32(values));
+    }
+    write_flat(path, (4, 4), channels);
+    let mut image = exr::prelude::read_all_data_from_file(path).unwrap();
+    image.attributes.chromaticities = chroma;
+    if let Some(id) = interop {
+        let value = AttributeValue::Text(Text::from(id));
+        (image.layer_data.first_mut().unwrap().attributes.other)
+            .insert(Text::from("colorInteropID"), value);
+    }
+    image.write().to_file(path).unwrap();
+}
+
+fn header(path: &Path) -> Header {
+    let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
+    meta.headers.into_iter().next().unwrap()
+}
+
+/// The colour attributes of `path`'s first part.
+fn colour(path: &Path) -> (Option<String>, Option<Chromaticities>) {
+    let h = header(path);
+    let id = h.own_attributes.other.iter().find_map(|(k, v)| match v {
+        AttributeValue::Text(t) if k.bytes() == b"colorInteropID" => Some(t.to_string()),
+        _ => None,
+    });
+    (id, h.shared_attributes.chromaticities)
+}
+
+/// PyPI's opencolorio: the interop ID of each colour space of `config`.
+fn interop_ids(python: &str, config: &str, spaces: &[&str]) -> Vec<String> {
+    let script = "import sys, PyOpenColorIO as o\n\
+                  c = o.Config.CreateFromFile(sys.argv[1])\n\
+                  for n in sys.argv[2:]: print(c.getColorSpace(n).getInteropID())";
+    let out = succeed(
+        Command::new(python)
+            .args(["-c", script, config])
+            .args(spaces),
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    text.lines().map(str::to_string).collect()
+}
+
+#[test]
+fn a_conversion_writes_its_destinations_colour_and_removes_what_is_not_known() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in.exr");
+    tagged(&input, Some(rec709()), Some("lin_rec709_scene"));
+    let convert = |out: &str, extra: &[&str]| {
+        let out = d.join(out);
+        let mut args = vec!["colorconvert", s(&input), "-o", s(&out), "-q"];
+        args.extend(extra);
+        ok(&args);
+        colour(&out)
+    };
+    let ap1 = chromaticities([0.713, 0.293, 0.165, 0.83, 0.128, 0.044, 0.32168, 0.33767]);
+    let spaces = ["--from", "Linear Rec.709 (sRGB)", "--to", "ACEScg"];
+    let cg = convert("cg.exr", &[&["--config", V4][..], &spaces].concat());
+    assert_eq!(cg, (Some("lin_ap1_scene".into()), Some(ap1)));
+    let to_709 = ["--from", "ACEScg", "--to", "sRGB Encoded Rec.709 (sRGB)"];
+    let srgb = convert("srgb.exr", &[&["--config", V4][..], &to_709].concat());
+    assert_eq!(srgb, (Some("srgb_rec709_scene".into()), Some(rec709())));
+    if let Some(python) = python() {
+        let ids = interop_ids(&python, V4, &["ACEScg", "sRGB Encoded Rec.709 (sRGB)"]);
+        assert_eq!([cg.0.unwrap(), srgb.0.unwrap()].to_vec(), ids);
+    }
+    // A config without interop IDs (OCIO 2.1's): neither is known.
+    let v1 = ["--config", V1, "--from", "ACES2065-1", "--to", "ACEScg"];
+    assert_eq!(convert("v1.exr", &v1), (None, None));
+    // A named layer's conversion leaves the unnamed layer's as they were.
+    let layer = [&["--config", V4, "--layer", "diffuse"][..], &spaces].concat();
+    assert_eq!(convert("layer.exr", &layer), colour(&input));
+    // A display's view ends in the display's colour space.
+    let out = d.join("display.exr");
+    ok(&[
+        "ociodisplay",
+        s(&input),
+        "-o",
+        s(&out),
+        "-q",
+        "--config",
+        V4,
+    ]);
+    assert_eq!(
+        colour(&out),
+        (Some("srgb_rec709_display".into()), Some(rec709()))
+    );
+    // A LUT file says nothing of where it ends: both removed.
+    let lut = d.join("half.cube");
+    std::fs::write(&lut, "LUT_1D_SIZE 2\n0 0 0\n0.5 0.5 0.5\n").unwrap();
+    let out = d.join("lut.exr");
+    ok(&[
+        "filetransform",
+        s(&input),
+        "-o",
+        s(&out),
+        "-q",
+        "--file",
+        s(&lut),
+    ]);
+    assert_eq!(colour(&out), (None, None));
+    // A grade in place changes no attribute.
+    let out = d.join("cdl.exr");
+    ok(&["cdl", s(&input), "-o", s(&out), "-q", "--slope", "1.1"]);
+    assert_eq!(colour(&out), colour(&input));
+    // exrheader reads what was written.
+    if let Some(exrheader) = peer("exrheader") {
+        let text = String::from_utf8(succeed(Command::new(exrheader).arg(d.join("cg.exr"))).stdout)
+            .unwrap();
+        assert!(
+            text.contains("colorInteropID (type string): \"lin_ap1_scene\""),
+            "{text}"
+        );
+        assert!(text.contains("white (0.32168 0.33767)"), "{text}");
+    }
+}
