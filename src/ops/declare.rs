@@ -34,13 +34,21 @@ pub struct Operation {
     pub build: fn(&Args, &mut GraphBuilder, &[NodeId]) -> std::result::Result<NodeId, String>,
     /// On the command line, before the graph is built: parameters measured
     /// from the inputs (by a first pass over `job`, an identity graph of
-    /// them) where they were not given.
+    /// them) where they were not given. In a dry run (the `bool`) it reads
+    /// no pixels.
     pub measure: Option<Measure>,
 }
 
-/// Measures parameters (name, value as given on the command line) from a
-/// first pass over the inputs.
-pub type Measure = fn(&Args, &Job) -> Result<Vec<(&'static str, String)>>;
+/// Measures parameters from a first pass over the inputs.
+pub type Measure = fn(&Args, &Job, bool) -> Result<Measured>;
+
+/// Parameters measured: name and value as given on the command line, and
+/// notes saying how, which a dry run prints.
+#[derive(Debug, Default)]
+pub struct Measured {
+    pub values: Vec<(&'static str, String)>,
+    pub notes: Vec<String>,
+}
 
 pub struct Input {
     /// The positional argument's name in `--help`, or the option (`--NAME`)

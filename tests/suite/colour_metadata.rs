@@ -153,3 +153,94 @@ fn a_conversion_writes_its_destinations_colour_and_removes_what_is_not_known() {
         assert!(text.contains("white (0.32168 0.33767)"), "{text}");
     }
 }
+
+/// A config of three spaces whose file rules send `*plate*` files to `g22`.
+const RULES: &str = r#"ocio_profile_version: 2
+roles:
+  default: raw
+  scene_linear: lin
+file_rules:
+  - !<Rule> {name: plates, colorspace: g22, pattern: "*plate*", extension: "*"}
+  - !<Rule> {name: Default, colorspace: raw}
+displays:
+  sRGB:
+    - !<View> {name: Raw, colorspace: raw}
+colorspaces:
+  - !<ColorSpace> {name: raw, isdata: true}
+  - !<ColorSpace> {name: lin}
+  - !<ColorSpace> {name: g22, to_reference: !<ExponentTransform> {value: [2.2, 2.2, 2.2, 1]}}
+"#;
+
+#[test]
+fn from_auto_reads_the_interop_id_the_chromaticities_or_the_file_rules() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // The same conversion with the source named and with auto: the same file.
+    let same = |input: &Path, named: &str, rest: &[&str]| {
+        let (auto, by_name) = (d.join("auto.exr"), d.join("named.exr"));
+        for (out, from) in [(&auto, "auto"), (&by_name, named)] {
+            let mut args = vec!["colorconvert", s(input), "-o", s(out), "-q"];
+            args.extend(["--from", from]);
+            args.extend(rest);
+            ok(&args);
+        }
+        assert_identical(&read_image(&auto), &read_image(&by_name));
+    };
+    let to_aces = ["--config", V4, "--to", "ACES2065-1"];
+    let with_id = d.join("cg.exr");
+    tagged(&with_id, None, Some("lin_ap1_scene"));
+    same(&with_id, "ACEScg", &to_aces);
+    let with_709 = d.join("709.exr");
+    tagged(&with_709, Some(rec709()), None);
+    same(&with_709, "Linear Rec.709 (sRGB)", &to_aces);
+    let rules = d.join("rules.ocio");
+    std::fs::write(&rules, RULES).unwrap();
+    let plate = d.join("plate.exr");
+    tagged(&plate, None, None);
+    same(&plate, "g22", &["--config", s(&rules), "--to", "lin"]);
+    // The dry run says what it chose, and why.
+    let dry = run(&[
+        "colorconvert",
+        s(&with_id),
+        "-o",
+        s(&d.join("x.exr")),
+        "--config",
+        V4,
+        "--from",
+        "auto",
+        "--to",
+        "ACES2065-1",
+        "--dry-run",
+    ]);
+    assert!(dry.status.success(), "{}", stderr(&dry));
+    let said = stderr(&dry);
+    assert!(said.contains("--from auto: 'ACEScg'"), "{said}");
+    assert!(said.contains("colorInteropID 'lin_ap1_scene'"), "{said}");
+    // Nothing fits: one line naming the file, its frame and what it has.
+    let comp = d.join("comp.1001.exr");
+    tagged(&comp, Some(rec709()), None);
+    let out = run(&[
+        "colorconvert",
+        s(&d.join("comp.####.exr")),
+        "-o",
+        s(&d.join("o.####.exr")),
+        "--config",
+        s(&rules),
+        "--from",
+        "auto",
+        "--to",
+        "lin",
+    ]);
+    assert!(!out.status.success());
+    let message = stderr(&out);
+    assert_eq!(message.lines().count(), 1, "{message}");
+    for says in [
+        "comp.1001.exr",
+        "1001",
+        "--from auto: no colorInteropID, chromaticities (0.64,0.33 ",
+        "match no colour space of config",
+        "name one with --from",
+    ] {
+        assert!(message.contains(says), "{says}: {message}");
+    }
+}

@@ -29,13 +29,15 @@ pub const COLORCONVERT: Operation = Operation {
         let map = super::Ocio::new(&processor).writing(edits);
         Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
-    measure: None,
+    measure: Some(super::measure),
 };
 
 params! {
     pub struct ColorconvertParams {
         /// The input's colour space (a name, alias or role of the config),
-        /// or a named transform of the config (its forward transform).
+        /// or a named transform of the config (its forward transform);
+        /// `auto`: read from the input's colorInteropID, chromaticities, or
+        /// the config's file rules.
         from: String,
         /// The output's colour space, or a named transform (its inverse).
         to: String,

@@ -6,6 +6,7 @@
 //! (`--config`, `$OCIO`, the built-in one), names checked against it, and
 //! the processor as a colour map. Semantics: specs/ops.md, "Colour (OpenColorIO)".
 
+pub mod auto;
 pub mod cdl;
 pub mod colorconvert;
 pub mod filetransform;
@@ -13,9 +14,10 @@ pub mod metadata;
 pub mod ociodisplay;
 pub mod ociolook;
 
-use super::declare::{Args, FileName};
+use super::declare::{Args, FileName, Measured};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
+use crate::engine::plan::Job;
 use crate::io::attributes::Edit;
 use crate::io::parts::unknown;
 use ocio::config::NamedTransform;
@@ -32,15 +34,34 @@ pub const BUILTIN: &str = "ocio://cg-config-latest";
 /// empty, else the built-in one (not the crate's `create_from_env`, which
 /// gives a raw config without `$OCIO`).
 pub fn config(given: Option<&FileName>) -> Result<Config, String> {
-    let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
-    let (source, from) = match (given, env) {
-        (Some(file), _) => (file.0.clone(), "--config"),
-        (None, Some(file)) => (file, "$OCIO"),
-        (None, None) => (BUILTIN.to_string(), "the built-in default"),
-    };
+    let (source, from) = source(given);
     Config::create_from_file(&source).map_err(|e| {
         format!("cannot load the OCIO config '{source}' ({from}): {e}; give --config FILE or ocio://NAME")
     })
+}
+
+/// Where the config comes from, and what named it.
+fn source(given: Option<&FileName>) -> (String, &'static str) {
+    let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
+    match (given, env) {
+        (Some(file), _) => (file.0.clone(), "--config"),
+        (None, Some(file)) => (file, "$OCIO"),
+        (None, None) => (BUILTIN.to_string(), "the built-in default"),
+    }
+}
+
+/// The colour operations' measure: `--from auto` read from the first frame
+/// of the input (`auto.rs`); nothing for the others.
+pub fn measure(args: &Args, job: &Job, _dry_run: bool) -> crate::error::Result<Measured> {
+    let Some(from) = args.values.get("from") else {
+        return Ok(Measured::default());
+    };
+    if from != auto::AUTO {
+        return Ok(Measured::default());
+    }
+    let given = args.values.get("config").map(|c| FileName(c.clone()));
+    let config = config(given.as_ref()).map_err(crate::error::Error::usage)?;
+    auto::measure(from, &config, &source(given.as_ref()).0, job)
 }
 
 /// A colour space, role or alias as the config spells its canonical name;
@@ -48,6 +69,13 @@ pub fn config(given: Option<&FileName>) -> Result<Config, String> {
 pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
     if let Some(space) = config.get_color_space(name) {
         return Ok(space.name().to_string());
+    }
+    if name == auto::AUTO {
+        return Err(
+            "--from auto reads the first frame of a command's input, which a job \
+                    node's input may not be: name the colour space in a job file"
+                .into(),
+        );
     }
     let spaces: Vec<String> = (0..config.num_color_spaces())
         .map(|i| config.color_space_name_by_index(i).to_string())

@@ -55,7 +55,8 @@ pub const OCIODISPLAY: Operation = Operation {
 
 params! {
     pub struct OciodisplayParams {
-        /// The input's colour space (a name, alias or role of the config).
+        /// The input's colour space (a name, alias or role of the config;
+        /// `auto`: read from the input, as colorconvert's).
         from: String = "scene_linear",
         /// The display (default: the config's default display).
         display: Option<String>,

@@ -33,7 +33,8 @@ params! {
     pub struct OciolookParams {
         /// The looks (a comma list, `-` before a look for its inverse).
         look: String,
-        /// The input's colour space (a name, alias or role of the config).
+        /// The input's colour space (a name, alias or role of the config;
+        /// `auto`: read from the input, as colorconvert's).
         from: String = "scene_linear",
         /// The output's colour space (default: from).
         to: Option<String>,
