@@ -244,3 +244,111 @@ fn from_auto_reads_the_interop_id_the_chromaticities_or_the_file_rules() {
         assert!(message.contains(says), "{says}: {message}");
     }
 }
+
+/// A config whose `shot` space is a LUT named by `$SHOT` (default `a`) in
+/// its search path.
+const SHOTS: &str = r#"ocio_profile_version: 2
+search_path: luts
+environment:
+  SHOT: a
+roles:
+  default: raw
+  scene_linear: lin
+displays:
+  sRGB:
+    - !<View> {name: Raw, colorspace: raw}
+colorspaces:
+  - !<ColorSpace> {name: raw, isdata: true}
+  - !<ColorSpace> {name: lin}
+  - !<ColorSpace> {name: shot, to_reference: !<FileTransform> {src: "$SHOT.spi1d", interpolation: linear}}
+"#;
+
+/// PyPI's opencolorio: `values` (R, G, B triples) from `shot` to `lin`
+/// with context variable SHOT set to `shot`.
+fn shot_reference(python: &str, config: &Path, shot: &str, values: &[[f32; 3]]) -> Vec<f32> {
+    let script = "import sys, json, PyOpenColorIO as o\n\
+                  c = o.Config.CreateFromFile(sys.argv[1])\n\
+                  x = c.getCurrentContext()\n\
+                  x.setStringVar('SHOT', sys.argv[2])\n\
+                  p = c.getProcessor(x, 'shot', 'lin').getDefaultCPUProcessor()\n\
+                  print(json.dumps([v for rgb in json.loads(sys.argv[3]) for v in p.applyRGB(rgb)]))";
+    let values = serde_json::to_string(values).unwrap();
+    let out = succeed(Command::new(python).args(["-c", script, s(config), shot, &values]));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn context_variables_choose_the_files_a_config_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::create_dir(d.join("luts")).unwrap();
+    for (shot, top) in [("a", "0.5"), ("b", "2.0"), ("sh010", "0.25")] {
+        let lut =
+            format!("Version 1\nFrom 0.0 1.0\nLength 3\nComponents 1\n{{\n0.0\n0.1\n{top}\n}}\n");
+        std::fs::write(d.join("luts").join(format!("{shot}.spi1d")), lut).unwrap();
+    }
+    let config = d.join("shots.ocio");
+    std::fs::write(&config, SHOTS).unwrap();
+    let input = d.join("in.exr");
+    tagged(&input, None, None);
+    let convert = |out: &Path, context: &[&str]| {
+        let mut args = vec!["colorconvert", s(&input), "-o", s(out), "-q", "--config"];
+        args.extend([
+            s(&config),
+            "--from",
+            "shot",
+            "--to",
+            "lin",
+            "--no-unpremult",
+        ]);
+        for c in context {
+            args.extend(["--context", c]);
+        }
+        ok(&args);
+        read_image(out)
+    };
+    let rgb = |img: &Img| -> Vec<[f32; 3]> {
+        (0..16)
+            .map(|i| ["R", "G", "B"].map(|c| img.channels[c].get_f32(i)))
+            .collect()
+    };
+    let values = rgb(&read_image(&input));
+    let python = python();
+    for (shot, context) in [
+        ("a", vec![]),
+        ("b", vec!["SHOT=b"]),
+        ("sh010", vec!["OTHER=x", "SHOT=sh010"]),
+    ] {
+        let got = rgb(&convert(&d.join(format!("{shot}.exr")), &context));
+        if let Some(python) = &python {
+            let want = shot_reference(python, &config, shot, &values);
+            for (g, w) in got.iter().flatten().zip(&want) {
+                assert!((g - w).abs() <= 1e-6 + 1e-5 * w.abs(), "{shot}: {g} vs {w}");
+            }
+        }
+    }
+    // --resume redoes the frames a context other than theirs made.
+    let out = d.join("seq.exr");
+    let a = convert(&out, &["SHOT=a"]);
+    let mut args = vec!["colorconvert", s(&input), "-o", s(&out), "-q", "--resume"];
+    args.extend([
+        "--config",
+        s(&config),
+        "--from",
+        "shot",
+        "--to",
+        "lin",
+        "--no-unpremult",
+    ]);
+    ok(&[&args[..], &["--context", "SHOT=b"]].concat());
+    let b = read_image(&out);
+    assert_identical(&b, &read_image(&d.join("b.exr")));
+    assert_ne!(rgb(&a), rgb(&b));
+    // A job file's node takes the same as a list.
+    let keys = format!(
+        "op = \"colorconvert\"\nconfig = \"{}\"\nfrom = \"shot\"\nto = \"lin\"\nno_unpremult = true\n\
+         context = [\"SHOT=b\"]",
+        s(&config)
+    );
+    assert_identical(&read_image(&one_op_job(d, &input, &keys)), &b);
+}

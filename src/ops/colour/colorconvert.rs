@@ -17,7 +17,7 @@ pub const COLORCONVERT: Operation = Operation {
         let p = ColorconvertParams::read(args)?;
         let config = super::config(p.config.as_ref())?;
         let transform = super::conversion(&config, &p.from, &p.to)?;
-        let processor = super::processor(&config, transform)?;
+        let processor = super::processor_in(&config, &p.context, transform)?;
         // A named transform's destination is no colour space of the config.
         let to = config
             .get_color_space(&p.to)
@@ -44,6 +44,9 @@ params! {
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }

@@ -14,7 +14,7 @@ pub mod metadata;
 pub mod ociodisplay;
 pub mod ociolook;
 
-use super::declare::{Args, FileName, Measured};
+use super::declare::{Args, FileName, Measured, Value, REPEATED};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
 use crate::engine::plan::Job;
@@ -22,7 +22,7 @@ use crate::io::attributes::Edit;
 use crate::io::parts::unknown;
 use ocio::config::NamedTransform;
 use ocio::{
-    ColorSpaceTransform, Config, CpuProcessor, GroupTransform, Processor, Transform,
+    ColorSpaceTransform, Config, Context, CpuProcessor, GroupTransform, Processor, Transform,
     TransformDirection, ViewType,
 };
 
@@ -203,11 +203,59 @@ pub fn direction(inverse: bool) -> TransformDirection {
 
 /// A transform's processor in a config (a raw one for files and CDLs).
 pub fn processor(config: &Config, transform: Transform) -> Result<Processor, String> {
+    processor_in(config, &Vars::default(), transform)
+}
+
+/// `processor`, with the config's context variables `vars` set over its
+/// own (`--context`).
+pub fn processor_in(
+    config: &Config,
+    vars: &Vars,
+    transform: Transform,
+) -> Result<Processor, String> {
+    let context = vars.context(config);
     let processor = config
-        .get_processor_for_transform(&transform, TransformDirection::Forward)
+        .get_processor_with_context(&context, &transform, TransformDirection::Forward)
         .map_err(|e| e.to_string())?;
     cdl::invertible(&processor)?;
     Ok(processor)
+}
+
+/// `--context KEY=VALUE`, given again for more: OCIO's context variables
+/// (`$SHOT` in a config's search path or a file transform's `src`); a job
+/// file's list of `"KEY=VALUE"` strings.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Vars(pub Vec<(String, String)>);
+
+impl Vars {
+    /// The config's current context with these variables set.
+    pub fn context(&self, config: &Config) -> Context {
+        let mut context = config.current_context().clone();
+        for (key, value) in &self.0 {
+            context.set_string_var(key, Some(value));
+        }
+        context
+    }
+}
+
+impl Value for Vars {
+    fn parse(text: &str) -> Result<Self, String> {
+        let lines = text.split(REPEATED).filter(|l| !l.is_empty());
+        let pairs = lines.map(|line| match line.split_once('=') {
+            Some((key, value)) if !key.trim().is_empty() => {
+                Ok((key.trim().to_string(), value.to_string()))
+            }
+            _ => Err(format!(
+                "'{line}': a context variable is KEY=VALUE (SHOT=sh010)"
+            )),
+        });
+        pairs.collect::<Result<_, _>>().map(Vars)
+    }
+    fn absent() -> Option<Self> {
+        Some(Vars::default())
+    }
+    const OPTIONAL: bool = true;
+    const REPEATS: bool = true;
 }
 
 /// An OCIO CPU processor as a colour map: built once per command, shared by

@@ -28,7 +28,7 @@ pub const OCIODISPLAY: Operation = Operation {
         let mut transform = DisplayViewTransform::new(&from, &display, &view);
         transform.direction = super::direction(p.inverse);
         let processor = match &p.looks {
-            None => super::processor(&config, Transform::DisplayView(transform))?,
+            None => super::processor_in(&config, &p.context, Transform::DisplayView(transform))?,
             // OCIO's LegacyViewingPipeline has no direction.
             Some(_) if p.inverse => {
                 return Err("ociodisplay --inverse takes the view's own looks, not --looks".into())
@@ -38,7 +38,8 @@ pub const OCIODISPLAY: Operation = Operation {
                 pipeline.set_display_view_transform(Some(&transform));
                 pipeline.set_looks_override_enabled(true);
                 pipeline.set_looks_override(&super::looks(&config, looks)?);
-                pipeline.get_processor(&config).map_err(|e| e.to_string())?
+                (pipeline.get_processor_with_context(&config, &p.context.context(&config)))
+                    .map_err(|e| e.to_string())?
             }
         };
         let edits = match p.inverse {
@@ -72,6 +73,9 @@ params! {
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }

@@ -20,7 +20,7 @@ pub const OCIOLOOK: Operation = Operation {
         };
         let mut transform = LookTransform::new(&from, &to, &super::looks(&config, &p.look)?);
         transform.direction = super::direction(p.inverse);
-        let processor = super::processor(&config, Transform::Look(transform))?;
+        let processor = super::processor_in(&config, &p.context, Transform::Look(transform))?;
         let written = if p.inverse { &from } else { &to };
         let map =
             super::Ocio::new(&processor).writing(super::metadata::destination(&config, written));
@@ -43,6 +43,9 @@ params! {
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }
