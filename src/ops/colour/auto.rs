@@ -16,12 +16,10 @@ use ocio::Config;
 /// The word that asks for it.
 pub const AUTO: &str = "auto";
 
-/// `from` given as `auto`: measured as the colour space of input 0's
-/// first frame in `config`, with a note saying why for the dry run.
-pub fn measure(from: &str, config: &Config, given: &str, job: &Job) -> Result<Measured> {
-    if from != AUTO {
-        return Ok(Measured::default());
-    }
+/// `--from auto`, measured as the colour space of input 0's first frame
+/// in `config` (`given`: what named it, for a config without a name), with
+/// a note saying why for the dry run.
+pub fn measure(config: &Config, given: &str, job: &Job) -> Result<Measured> {
     let at = job.frames.iter().find_map(|f| match f.inputs[0] {
         Source::Frame(at) => Some(at),
         Source::Black(_) => None,

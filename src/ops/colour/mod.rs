@@ -61,7 +61,7 @@ pub fn measure(args: &Args, job: &Job, _dry_run: bool) -> crate::error::Result<M
     }
     let given = args.values.get("config").map(|c| FileName(c.clone()));
     let config = config(given.as_ref()).map_err(crate::error::Error::usage)?;
-    auto::measure(from, &config, &source(given.as_ref()).0, job)
+    auto::measure(&config, &source(given.as_ref()).0, job)
 }
 
 /// A colour space, role or alias as the config spells its canonical name;
@@ -72,8 +72,9 @@ pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
     }
     if name == auto::AUTO {
         return Err(
-            "--from auto reads the first frame of a command's input, which a job \
-                    node's input may not be: name the colour space in a job file"
+            "'auto' is no colour space: --from auto is the command line's (it reads \
+             the first frame of the command's input, which a job node's input may not \
+             be); name the colour space"
                 .into(),
         );
     }
