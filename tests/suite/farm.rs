@@ -853,16 +853,23 @@ fn amount(template: &Value, name: &str) -> u64 {
 }
 
 /// The memory bound of specs/architecture.md worked by hand, in MiB, for
-/// one frame of `over` of the generated fg (half RGBA, float Z and vectors:
-/// 20 bytes a pixel) and bg (12 bytes, as the result), W wide, strips of S
-/// rows, ZIP blocks of 16 lines: both inputs and the merge alive at once,
-/// none with a halo; the writer's two batches waiting, each also laid out.
+/// one frame of `over` on one thread of the generated fg (half RGBA, float
+/// Z and vectors: 20 bytes a pixel) and bg (12 bytes, as the result), W
+/// wide, strips of S rows, ZIP blocks of 16 lines: both inputs and the
+/// merge alive at once, none with a halo; ZIP inputs inflate into the
+/// thread's buffers (c_i = 1) and the ZIP output transforms there (c_o =
+/// 0); the writer's two batches waiting, each also laid out; the thread's
+/// codec buffers: the largest block (fg's), a read block with its 64 bytes
+/// of padding, an output block deflated (1/512 over) and the compressors at
+/// the default level (660 KiB libdeflate, 300 KiB igzip).
 fn over_bound_by_hand(w: u64, s: u64) -> u64 {
     let (l, fg, bg) = (16, 20, 12);
-    let decode = w * (fg + bg) * (3 * (s + 2 * l) + 2 * s);
+    let decode = w * (fg + bg) * (2 * (s + 2 * l) + 2 * s);
     let windows = w * s * (fg + bg + bg);
-    let encode = (5 + 2 * 2) * s * w * bg;
-    (decode + windows + encode + (10 << 20)).div_ceil(1 << 20)
+    let encode = (4 + 2 * 2) * s * w * bg;
+    let (read, written) = (w * l * fg, w * l * bg);
+    let codec = read + (read + 64) + (written + written / 512) + (660 << 10) + (300 << 10);
+    (decode + windows + encode + codec + (10 << 20)).div_ceil(1 << 20)
 }
 
 /// OpenJD's host requirements: the task's threads as vcpus and the
