@@ -35,7 +35,8 @@ fuzz_target!(|data: &[u8]| {
     if bytes.len() >= 4 {
         // A seed keeps its own magic when it has one.
         if !MAGIC.contains(&bytes[..4].try_into().expect("4 bytes")) {
-            bytes[..4].copy_from_slice(&MAGIC[bytes[0] as usize % 4]);
+            let magic = MAGIC[bytes[0] as usize % 4];
+            bytes[..4].copy_from_slice(&magic);
         }
     }
     let path = scratch();
@@ -43,5 +44,5 @@ fuzz_target!(|data: &[u8]| {
     if let Ok(file) = ExrFile::open(path, None) {
         let _ = file.check_part(0);
     }
-    let _ = exrcomp::info::describe(path);
+    let _ = exrcomp::tools::info::describe(path);
 });
