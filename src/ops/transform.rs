@@ -244,14 +244,7 @@ impl Params {
     /// sine and cosine in f32, exact at multiples of 90°); with none but a
     /// turn it is oiiotool's `--rotate` matrix to the bit.
     fn sampling(&self, display: IntegerBounds) -> SampleMap {
-        let (left, bottom) = (display.position.x() as f64, display.end().y() as f64);
-        let (cx, cy) = match self.center {
-            Some(Pair(x, y)) => (left + x, bottom - y),
-            None => (
-                left + display.size.width() as f64 / 2.0,
-                bottom - display.size.height() as f64 / 2.0,
-            ),
-        };
+        let (cx, cy) = self.centre(display);
         let (s, c) = match (self.rotate / 90.0).fract() == 0.0 {
             true => {
                 let (s, c) = sin_cos(-self.rotate);
@@ -281,18 +274,24 @@ impl Params {
         SampleMap::inverse_of(linear, (cx as f32, cy as f32), shift)
     }
 
-    /// The forward map for display window `display`: translate · centre ·
-    /// rotate · scale · skew · centre⁻¹, built with y up (Nuke's) and
-    /// turned to pixel coordinates (y down) by conjugating with y → -y.
-    fn affine(&self, display: IntegerBounds) -> Affine {
+    /// The pivot in pixel coordinates (y down): `--center`, given from the
+    /// display window's bottom left with y up, else the window's centre.
+    fn centre(&self, display: IntegerBounds) -> (f64, f64) {
         let (left, bottom) = (display.position.x() as f64, display.end().y() as f64);
-        let (cx, cy) = match self.center {
+        match self.center {
             Some(Pair(x, y)) => (left + x, bottom - y),
             None => (
                 left + display.size.width() as f64 / 2.0,
                 bottom - display.size.height() as f64 / 2.0,
             ),
-        };
+        }
+    }
+
+    /// The forward map for display window `display`: translate · centre ·
+    /// rotate · scale · skew · centre⁻¹, built with y up (Nuke's) and
+    /// turned to pixel coordinates (y down) by conjugating with y → -y.
+    fn affine(&self, display: IntegerBounds) -> Affine {
+        let (cx, cy) = self.centre(display);
         let (s, c) = sin_cos(self.rotate);
         let (sx, sy) = (
             self.scale.0 * if self.flop { -1.0 } else { 1.0 },
