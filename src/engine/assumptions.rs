@@ -1,27 +1,25 @@
 //! Warnings, before a run, where users slip: inputs whose display windows
 //! differ, and what each operation assumes of its inputs
 //! (`Op::assumptions`). They are read from the first frame of each input,
-//! opened by the run (`run::first_files`); `run::run_job` prints each once,
-//! unless `--quiet`.
+//! opened as the job was made (`Job::first_files`); `run::run_job` prints
+//! each once, unless `--quiet`.
 
 use super::frame_plan::plan_parts;
 use super::graph::{Display, Node};
-use super::plan::{FrameSources, HeaderBase, Job, Source};
+use super::plan::{FirstFile, FrameSources, HeaderBase, Job};
 use crate::io::header_text::box_text;
 use crate::io::parts::choose_part;
-use crate::io::reader::ExrFile;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
 
 /// The warnings for `job`, whose inputs were given as `texts`. None when a
 /// first frame cannot be read or decoded (the run reports that) or is made
-/// black. `files` is per input its first frame read and its file, opened
-/// by the run (`run::first_files`).
-pub fn warnings(job: &Job, texts: &[String], files: &[Option<(i64, ExrFile)>]) -> Vec<String> {
+/// black.
+pub fn warnings(job: &Job, texts: &[String]) -> Vec<String> {
     let Some(first) = job.frames.first() else {
         return Vec::new();
     };
-    let mut warnings = assumed(job, texts, first, files);
+    let mut warnings = assumed(job, texts, first);
     if job.all_parts {
         warnings.extend(carried_parts(job, first));
     }
@@ -30,16 +28,11 @@ pub fn warnings(job: &Job, texts: &[String], files: &[Option<(i64, ExrFile)>]) -
 
 /// The warnings of the first frame's inputs (with `--all-parts`, of the
 /// first part).
-fn assumed(
-    job: &Job,
-    texts: &[String],
-    first: &FrameSources,
-    files: &[Option<(i64, ExrFile)>],
-) -> Vec<String> {
+fn assumed(job: &Job, texts: &[String], first: &FrameSources) -> Vec<String> {
     let headers: Option<Vec<Header>> = (0..job.inputs.len())
         .map(|i| {
-            let (read, file) = files.get(i)?.as_ref()?;
-            if first.inputs[i] != Source::Frame(*read) {
+            let FirstFile { frame, file, .. } = job.first_files.get(i)?.as_ref()?;
+            if *frame != first.frame {
                 return None;
             }
             let part = choose_part(file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;

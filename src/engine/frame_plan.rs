@@ -184,13 +184,13 @@ pub fn plan_parts(job: &Job, sources: &FrameSources) -> Result<Vec<FramePlan>> {
     if !job.all_parts {
         return Ok(vec![plan_frame(job, sources, None, &job.graph)?]);
     }
-    let at = sources.inputs[0].file_frame();
-    let headers = ExrFile::open(&job.inputs[0].path(at), job.frame_label(at))?
-        .meta
-        .headers;
+    // Opened once, for every part's plan.
+    let file = job.input_file(0, sources)?;
+    let headers = &file.meta.headers;
     let mut plans = (0..headers.len())
         .map(|part| {
-            let plan = plan_frame(job, sources, Some(part), &job.graph);
+            let forced = Forced { part, file: &file };
+            let plan = plan_frame(job, sources, Some(forced), &job.graph);
             plan.map_err(|e| in_part(e, part, &headers[part]))
         })
         .collect::<Result<Vec<_>>>()?;
@@ -221,6 +221,14 @@ fn in_part(error: Error, part: usize, header: &Header) -> Error {
     Error::new(error.kind, format!("part {part}{name}: {}", error.message))
 }
 
+/// With `--all-parts`, the part of input 0 a plan reads, and that input's
+/// file, opened once for every part.
+#[derive(Clone, Copy)]
+struct Forced<'f> {
+    part: usize,
+    file: &'f Arc<ExrFile>,
+}
+
 /// Opens the inputs of `sources.frame` and plans its output through
 /// `graph`; `part` forces the part of input 0 read (`--all-parts`), and a
 /// part an operation refuses is then carried as it is (`carry_as_is`).
@@ -228,7 +236,7 @@ fn in_part(error: Error, part: usize, header: &Header) -> Error {
 fn plan_frame(
     job: &Job,
     sources: &FrameSources,
-    part: Option<usize>,
+    part: Option<Forced>,
     graph: &Graph,
 ) -> Result<FramePlan> {
     let frame = sources.frame;
@@ -307,25 +315,24 @@ struct Opened<'a> {
 }
 
 impl<'a> Opened<'a> {
-    /// Opens each input's frame and chooses its part (`forced` for input
-    /// 0), its deep flattening and its level.
-    fn open(job: &Job, sources: &'a FrameSources, forced: Option<usize>) -> Result<Self> {
+    /// Opens each input's frame (`Job::input_file`) and chooses its part
+    /// (`forced` for input 0), its deep flattening and its level.
+    fn open(job: &Job, sources: &'a FrameSources, forced: Option<Forced>) -> Result<Self> {
         let mut parts = Vec::new();
-        let inputs: Vec<Arc<ExrFile>> = job
-            .inputs
-            .iter()
-            .zip(&sources.inputs)
-            .enumerate()
-            .map(|(i, (pattern, source))| {
-                let at = source.file_frame();
-                let file = ExrFile::open(&pattern.path(at), job.frame_label(at))?;
-                let part = match forced.filter(|_| i == 0) {
-                    Some(part) => part,
-                    None => choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?,
+        let inputs: Vec<Arc<ExrFile>> = (0..job.inputs.len())
+            .map(|i| {
+                let (file, part) = match forced.filter(|_| i == 0) {
+                    Some(Forced { part, file }) => (file.clone(), part),
+                    None => {
+                        let file = job.input_file(i, sources)?;
+                        let part =
+                            choose_part(&file, job.parts[i].as_deref(), job.view.as_deref())?;
+                        (file, part)
+                    }
                 };
                 file.check_codec(part)?;
                 parts.push(part);
-                Ok(Arc::new(file))
+                Ok(file)
             })
             .collect::<Result<_>>()?;
         let deep: Vec<Option<Arc<DeepInput>>> = (0..inputs.len())
@@ -955,7 +962,7 @@ fn strip_rows(
 fn carry_as_is(
     job: &Job,
     sources: &FrameSources,
-    part: Option<usize>,
+    part: Option<Forced>,
     refusal: Error,
 ) -> Result<FramePlan> {
     let mut plan = plan_frame(job, sources, part, &Graph::identity())?;

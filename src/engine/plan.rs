@@ -3,12 +3,15 @@
 //! planned from it in `frame_plan.rs`.
 
 use super::graph::Graph;
+use crate::error::Result;
 use crate::io::attributes::Edits;
+use crate::io::reader::ExrFile;
 use crate::io::sequence::{FramePattern, InputTime};
 use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::path::PathBuf;
+use std::sync::Arc;
 
 /// Most bytes one strip may take, every node's rows together: a few strips
 /// are in flight at once (decoded, composed, encoded), so this keeps a frame
@@ -77,6 +80,21 @@ pub struct Job {
     pub media: Option<Review>,
     /// The slate this run writes before its frames (`--slate`), if any.
     pub slate: Option<SlateFrame>,
+    /// Per input, its first file read, opened as the job was made
+    /// (`run::first_files`); empty for a job of no inputs.
+    pub first_files: Vec<Option<FirstFile>>,
+}
+
+/// An input's first file read (its first frame not made black), opened
+/// before the run for what is read of it then (luminance, warnings): the
+/// plan of `frame`, the first output frame reading it, reads it rather than
+/// opening it again, so that each input frame is opened once a run.
+pub struct FirstFile {
+    /// The output frame reading it.
+    pub frame: i64,
+    /// The input's frame it is.
+    pub read: i64,
+    pub file: Arc<ExrFile>,
 }
 
 /// A review media output: its format's options, and a burn-in.
@@ -137,11 +155,31 @@ impl Job {
         (reads, writes)
     }
 
-    /// Frame numbers appear in messages only for sequences.
     pub fn frame_label(&self, frame: i64) -> Option<i64> {
-        let sequence = self.output.is_sequence() || self.inputs.iter().any(|p| p.is_sequence());
-        sequence.then_some(frame)
+        frame_label(&self.output, &self.inputs, frame)
     }
+
+    /// Input `i`'s file for output frame `sources`: its first file, opened
+    /// already, if this is the frame reading it (`FirstFile`), else opened
+    /// now.
+    pub fn input_file(&self, i: usize, sources: &FrameSources) -> Result<Arc<ExrFile>> {
+        let source = sources.inputs[i];
+        if let Some(Some(first)) = self.first_files.get(i) {
+            if first.frame == sources.frame && source == Source::Frame(first.read) {
+                return Ok(first.file.clone());
+            }
+        }
+        let at = source.file_frame();
+        let file = ExrFile::open(&self.inputs[i].path(at), self.frame_label(at))?;
+        Ok(Arc::new(file))
+    }
+}
+
+/// Frame numbers appear in messages only for sequences (of `output` or
+/// `inputs`).
+pub fn frame_label(output: &FramePattern, inputs: &[FramePattern], frame: i64) -> Option<i64> {
+    let sequence = output.is_sequence() || inputs.iter().any(|p| p.is_sequence());
+    sequence.then_some(frame)
 }
 
 /// Which frame is the slate (`--slate`) and the shot's frames it introduces.

@@ -6,10 +6,8 @@ use super::frame_plan::input_level;
 use super::plan::{Job, Source};
 use crate::error::Result;
 use crate::io::parts::choose_part;
-use crate::io::reader::ExrFile;
 use crate::io::text::Utf8Text;
 use rayon::prelude::*;
-use std::sync::Arc;
 
 /// The largest `measure(first, second)` over every row of channels `names`
 /// of input `input`, in every frame the job reads from disk.
@@ -21,10 +19,10 @@ pub fn max_over_rows(
 ) -> Result<usize> {
     let mut most = 0;
     for sources in &job.frames {
-        let Source::Frame(at) = sources.inputs[input] else {
+        if matches!(sources.inputs[input], Source::Black(_)) {
             continue;
-        };
-        let file = ExrFile::open(&job.inputs[input].path(at), job.frame_label(at))?;
+        }
+        let file = job.input_file(input, sources)?;
         let part = choose_part(&file, job.parts[input].as_deref(), job.view.as_deref())?;
         let header = file.header(part);
         let position = |name: &str| {
@@ -41,7 +39,7 @@ pub fn max_over_rows(
         let window = level.window(header);
         let columns = (window.position.x(), window.size.width());
         let step = level.block.y().max(64) * rayon::current_num_threads();
-        let mut cursor = InputCursor::new(Arc::new(file), part, level, window);
+        let mut cursor = InputCursor::new(file.clone(), part, level, window);
         let mut frame_most = 0;
         for top in (window.position.y()..window.end().y()).step_by(step) {
             let rows = top..(top + step as i32).min(window.end().y());

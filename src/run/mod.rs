@@ -18,7 +18,7 @@ use crate::engine::memory_bound::memory_bound;
 use crate::engine::pipeline;
 use crate::engine::pipeline::Events;
 use crate::engine::plan::{
-    FrameSources, HeaderBase, Job, OutputBlocks, Review, SlateFrame, Source,
+    frame_label, FirstFile, FrameSources, HeaderBase, Job, OutputBlocks, Review, SlateFrame, Source,
 };
 use crate::engine::sources::{default_frames, resolve};
 use crate::error::{Error, Kind, Result};
@@ -44,7 +44,7 @@ use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 /// What a dry run of a frame-writing command found.
 pub struct DryRun {
@@ -151,7 +151,7 @@ pub fn input_job(
     }
     let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
-    let first = first_files(&inputs, &resolved.frames);
+    let first = first_files(&inputs, &output, &resolved.frames);
     let luminance = luminance_inputs(&first, &parts, layers, run.write.all_parts, &graph);
     let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
     let reads = Job {
@@ -161,6 +161,7 @@ pub fn input_job(
         parts,
         view: layers.view.clone(),
         level: layers.level,
+        first_files: first,
         ..engine_job(
             output,
             resolved.frames,
@@ -173,7 +174,7 @@ pub fn input_job(
         ..written_as(reads, run, attributes, media, slate)
     };
     let summary = Summary {
-        warnings: crate::engine::assumptions::warnings(&job, texts, &first),
+        warnings: crate::engine::assumptions::warnings(&job, texts),
         named: frames.len(),
         skipped: resolved.skipped,
         replaced: resolved.replaced,
@@ -201,18 +202,29 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
     Ok(())
 }
 
-/// Per input, the first frame it reads (not made black) and its file, open:
-/// opened once for what is read of it before the run (the luminance
-/// weights, the assumptions' warnings). None where it cannot be read (the
-/// run reports that) or every frame is black.
-fn first_files(inputs: &[FramePattern], frames: &[FrameSources]) -> Vec<Option<(i64, ExrFile)>> {
+/// Per input, its first file read (`FirstFile`), open: opened once for
+/// what is read of it before the run (the luminance weights, the
+/// assumptions' warnings) and by the plan of the frame reading it. None
+/// where it cannot be read (that plan opens it again and reports why) or
+/// every frame is black.
+fn first_files(
+    inputs: &[FramePattern],
+    output: &FramePattern,
+    frames: &[FrameSources],
+) -> Vec<Option<FirstFile>> {
     (0..inputs.len())
         .map(|i| {
-            let frame = frames.iter().find_map(|f| match f.inputs[i] {
-                Source::Frame(frame) => Some(frame),
+            let (frame, read) = frames.iter().find_map(|f| match f.inputs[i] {
+                Source::Frame(read) => Some((f.frame, read)),
                 Source::Black(_) => None,
             })?;
-            Some((frame, ExrFile::open(&inputs[i].path(frame), None).ok()?))
+            let label = frame_label(output, inputs, read);
+            let file = ExrFile::open(&inputs[i].path(read), label).ok()?;
+            Some(FirstFile {
+                frame,
+                read,
+                file: Arc::new(file),
+            })
         })
         .collect()
 }
@@ -223,7 +235,7 @@ fn first_files(inputs: &[FramePattern], frames: &[FrameSources]) -> Vec<Option<(
 /// are): the operations read it as RGB. A frame that cannot be read is left
 /// to the run.
 fn luminance_inputs(
-    first: &[Option<(i64, ExrFile)>],
+    first: &[Option<FirstFile>],
     parts: &[Option<String>],
     layers: &LayerArgs,
     all_parts: bool,
@@ -234,7 +246,7 @@ fn luminance_inputs(
     }
     (0..first.len())
         .map(|i| {
-            let (_, file) = first[i].as_ref()?;
+            let file = &first[i].as_ref()?.file;
             let read = match all_parts {
                 true => 0..file.meta.headers.len(),
                 false => {
@@ -335,6 +347,7 @@ fn engine_job(
         attributes: Edits::default(),
         media: None,
         slate: None,
+        first_files: Vec::new(),
     }
 }
 
@@ -648,7 +661,7 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
             let path = input.path(source.file_frame());
             let file = path.display().to_string();
             let missing = input.path(wanted).display().to_string();
-            let part = part_read(job, i, &path);
+            let part = part_read(job, i, sources);
             reads.push(match source {
                 Source::Frame(f) if f == wanted => (file, part, "frame", None),
                 Source::Frame(_) => (file, part, "held", Some(missing)),
@@ -709,14 +722,14 @@ fn dry_run_listing(job: &Job, json: bool) -> String {
     text
 }
 
-/// The part of input `i`'s file `path` that its part or the view picks,
-/// named for the dry run's listing: none without a choice, or when the file
-/// cannot be read (the run says why).
-fn part_read(job: &Job, i: usize, path: &Path) -> Option<String> {
+/// The part of input `i`'s file in `sources` that its part or the view
+/// picks, named for the dry run's listing: none without a choice, or when
+/// the file cannot be read (the run says why).
+fn part_read(job: &Job, i: usize, sources: &FrameSources) -> Option<String> {
     if job.view.is_none() && job.parts[i].is_none() {
         return None;
     }
-    let file = ExrFile::open(path, None).ok()?;
+    let file = job.input_file(i, sources).ok()?;
     let part = choose_part(&file, job.parts[i].as_deref(), job.view.as_deref()).ok()?;
     Some(match &file.header(part).own_attributes.layer_name {
         Some(name) => format!("part {part} '{}'", name.utf8()),

@@ -19,6 +19,7 @@ mod first_run;
 mod foreign_inputs;
 mod grades;
 mod hostile;
+mod input_opens;
 mod job_files;
 mod layers_and_parts;
 mod luminance_chroma;

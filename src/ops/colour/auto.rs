@@ -7,7 +7,6 @@ use super::metadata::{interop_id, named, INTEROP_ID};
 use crate::engine::plan::{Job, Source};
 use crate::error::{Error, Result};
 use crate::io::parts::choose_part;
-use crate::io::reader::ExrFile;
 use crate::ops::declare::Measured;
 use exr::meta::attribute::AttributeValue;
 use exr::meta::header::Header;
@@ -20,17 +19,14 @@ pub const AUTO: &str = "auto";
 /// in `config` (`given`: what named it, for a config without a name), with
 /// a note saying why for the dry run.
 pub fn measure(config: &Config, given: &str, job: &Job) -> Result<Measured> {
-    let at = job.frames.iter().find_map(|f| match f.inputs[0] {
-        Source::Frame(at) => Some(at),
-        Source::Black(_) => None,
-    });
-    let Some(at) = at else {
+    let first = (job.frames.iter()).find(|f| matches!(f.inputs[0], Source::Frame(_)));
+    let Some(first) = first else {
         return Err(Error::usage(
             "--from auto reads the input's colour attributes, and every frame of it is \
              missing: name the colour space with --from",
         ));
     };
-    let file = ExrFile::open(&job.inputs[0].path(at), job.frame_label(at))?;
+    let file = job.input_file(0, first)?;
     let part = choose_part(&file, job.parts[0].as_deref(), job.view.as_deref())?;
     let path = file.path.to_string_lossy().into_owned();
     let (space, why) = source(config, file.header(part), &path).map_err(|found| {
