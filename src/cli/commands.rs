@@ -40,7 +40,8 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
         } => {
             let graph = Graph::identity();
             let layers = LayerArgs::default();
-            let (mut job, summary) = input_job(&inputs[..1], &output, graph, 0, &layers, &run)?;
+            let (mut job, summary) =
+                input_job(&inputs[..1], &[], &output, graph, 0, &layers, &run)?;
             job.merged[0] = inputs[1..]
                 .iter()
                 .map(|p| FramePattern::parse(p))
@@ -111,20 +112,15 @@ fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<
         ..run
     };
     let (texts, parts): (Vec<String>, Vec<Option<String>>) = contents.reads.into_iter().unzip();
-    let (mut job, summary) = input_job(
+    let (job, summary) = input_job(
         &texts,
+        &parts,
         &contents.output,
         contents.graph,
         contents.header_from,
         &LayerArgs::default(),
         &run,
     )?;
-    // A read's own `part` key, where its file name has no `:PART`.
-    for (asked, part) in job.parts.iter_mut().zip(parts) {
-        if asked.is_none() {
-            *asked = part;
-        }
-    }
     run_job(&job, "run", &run, summary)
 }
 
@@ -136,7 +132,7 @@ fn copy(
     layers: &LayerArgs,
     run: &RunArgs,
 ) -> Result<Option<DryRun>> {
-    let (job, summary) = input_job(&[input], output, Graph::identity(), 0, layers, run)?;
+    let (job, summary) = input_job(&[input], &[], output, Graph::identity(), 0, layers, run)?;
     run_job(&job, label, run, summary)
 }
 
@@ -175,7 +171,15 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
     };
     let header = op.header.unwrap_or(call.inputs.len() - 1);
     let job = |inputs: &[String], graph, header| {
-        input_job(inputs, &call.output, graph, header, &call.layers, &call.run)
+        input_job(
+            inputs,
+            &[],
+            &call.output,
+            graph,
+            header,
+            &call.layers,
+            &call.run,
+        )
     };
     if let Some(measure) = op.measure {
         let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;

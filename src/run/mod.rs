@@ -96,10 +96,12 @@ pub fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
     }))
 }
 
-/// A job over input sequences (`file.exr:PART` picks a part); the header
+/// A job over input sequences (`file.exr:PART` picks a part, else a job
+/// file's read's own `part` key in `read_parts`, else `--part`); the header
 /// comes from input `header_from`.
 pub fn input_job(
     texts: &[String],
+    read_parts: &[Option<String>],
     output: &str,
     graph: Graph,
     header_from: usize,
@@ -117,7 +119,7 @@ pub fn input_job(
     let mut inputs = Vec::new();
     let mut parts = Vec::new();
     let mut times = Vec::new();
-    for text in texts {
+    for (i, text) in texts.iter().enumerate() {
         let (rest, time) = split_time(text)?;
         let (path, part) = split_part(rest);
         let pattern = FramePattern::parse(path)?;
@@ -125,6 +127,7 @@ pub fn input_job(
         inputs.push(pattern);
         parts.push(
             part.map(str::to_string)
+                .or_else(|| read_parts.get(i).cloned().flatten())
                 .or_else(|| layers.part.part.clone()),
         );
     }

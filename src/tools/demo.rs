@@ -149,6 +149,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
         };
         let (job, summary) = input_job(
             &[pattern(input)],
+            &[],
             &pattern(output),
             graph.finish(),
             0,
@@ -170,6 +171,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
     let (job, summary) = input_job(
         &shot,
+        &[],
         &pattern("diffrender"),
         graph.finish(),
         3,
@@ -192,7 +194,15 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     let moving = effects.blur(&mut graph, nodes[0])?;
     let defocused = effects.defocus(&mut graph, nodes[1])?;
     add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
-    let (job, summary) = input_job(&inputs, &pattern("comp"), graph.finish(), 1, &layers, &all)?;
+    let (job, summary) = input_job(
+        &inputs,
+        &[],
+        &pattern("comp"),
+        graph.finish(),
+        1,
+        &layers,
+        &all,
+    )?;
     run_job(&job, "demo", &all, summary)?;
 
     write_sheet(dir, width, &shown, run)
@@ -301,6 +311,7 @@ impl Effects {
     fn measure(ball: &str, height: usize, run: &RunArgs) -> Result<Self> {
         let (job, _) = input_job(
             &[ball.to_string()],
+            &[],
             ball,
             Graph::identity(),
             0,

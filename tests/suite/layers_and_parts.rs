@@ -576,6 +576,20 @@ fn all_parts_names_a_part_it_cannot_process_and_refuses_two_input_operations() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {message}");
         assert!(message.contains("all-parts"), "{args:?}: {message}");
     }
+    // A job file's read with its own `part` key likewise (the key was applied
+    // after the job was made, so the part went unchecked: exit 0).
+    let job = dir.path().join("part.toml");
+    let text = format!(
+        "[[node]]\nname = \"in\"\nread = \"{}\"\npart = \"depth\"\n\n\
+         [[node]]\nname = \"out\"\nwrite = \"{}\"\ninputs = [\"in\"]\nall_parts = true\n",
+        s(&input),
+        s(&output)
+    );
+    std::fs::write(&job, text).unwrap();
+    let out = run(&["run", s(&job)]);
+    let message = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{message}");
+    assert!(message.contains("all-parts"), "{message}");
 }
 
 /// A job's read takes a part by index as `--part` does (`part = 1` had been
