@@ -17,6 +17,7 @@ mod diffrender_and_zmerge;
 mod farm;
 mod first_run;
 mod foreign_inputs;
+mod foreign_png;
 mod grades;
 mod hostile;
 mod job_files;

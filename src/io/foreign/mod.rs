@@ -9,7 +9,9 @@
 
 pub mod cineon;
 pub mod dpx;
+pub mod png;
 mod raw;
+mod stream;
 
 use exr::meta::attribute::{AttributeValue, ChannelDescription, SampleType, Text};
 use exr::meta::header::Header;
@@ -23,6 +25,7 @@ use std::ops::Range;
 pub enum Format {
     Dpx,
     Cineon,
+    Png,
 }
 
 impl Format {
@@ -30,6 +33,7 @@ impl Format {
         match self {
             Format::Dpx => "DPX",
             Format::Cineon => "Cineon",
+            Format::Png => "PNG",
         }
     }
 }
@@ -39,6 +43,7 @@ pub fn sniff(magic: [u8; 4]) -> Option<Format> {
     match &magic {
         b"SDPX" | b"XPDS" => Some(Format::Dpx),
         [0x80, 0x2a, 0x5f, 0xd7] | [0xd7, 0x5f, 0x2a, 0x80] => Some(Format::Cineon),
+        [0x89, b'P', b'N', b'G'] => Some(Format::Png),
         _ => None,
     }
 }
@@ -51,6 +56,19 @@ pub trait Rows: Send + Sync {
     /// an error says what is wrong in a few words (the caller names the
     /// file).
     fn read(&self, file: &File, rows: Range<usize>) -> Result<Vec<u8>, String>;
+
+    /// Whether rows decode only in order from the image's top (a
+    /// compressed stream): a row asked before the last one read starts
+    /// the decoding over, so readers ask in order (`ExrFile::sequential`).
+    fn sequential(&self) -> bool {
+        false
+    }
+
+    /// The bytes the reader holds between reads (decoder state, a strip
+    /// decoded): its term in the memory bound.
+    fn resident(&self) -> u64 {
+        0
+    }
 }
 
 /// A foreign file opened: its format, the header it is read as and the
@@ -70,6 +88,7 @@ pub fn open(file: &File, len: u64, format: Format) -> Result<Foreign, String> {
     match format {
         Format::Dpx => dpx::open(file, len),
         Format::Cineon => cineon::open(file, len),
+        Format::Png => png::open(file, len),
     }
 }
 
