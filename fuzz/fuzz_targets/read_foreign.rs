@@ -1,7 +1,7 @@
-//! Feeds arbitrary bytes to exrcomp's DPX, Cineon and PNG readers as a file.
+//! Feeds arbitrary bytes to exrcomp's DPX, Cineon, PNG and TIFF readers as a file.
 //!
 //! The input's first byte picks a magic number (DPX big- or little-endian,
-//! Cineon big- or little-endian, PNG), which replaces its first four bytes, so
+//! Cineon big- or little-endian, PNG, TIFF either way), which replaces its first four bytes, so
 //! that every input reaches a foreign reader's header checks rather than
 //! the EXR reader's. As `read_exr`: the file is opened with
 //! `ExrFile::open`, every row decoded (`check_part`), then `info` runs on
@@ -23,12 +23,14 @@ fn scratch() -> &'static PathBuf {
     })
 }
 
-const MAGIC: [[u8; 4]; 5] = [
+const MAGIC: [[u8; 4]; 7] = [
     *b"SDPX",
     *b"XPDS",
     [0x80, 0x2a, 0x5f, 0xd7],
     [0xd7, 0x5f, 0x2a, 0x80],
     [0x89, b'P', b'N', b'G'],
+    [b'I', b'I', 42, 0],
+    [b'M', b'M', 0, 42],
 ];
 
 fuzz_target!(|data: &[u8]| {

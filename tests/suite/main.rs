@@ -18,6 +18,7 @@ mod farm;
 mod first_run;
 mod foreign_inputs;
 mod foreign_png;
+mod foreign_tiff;
 mod grades;
 mod hostile;
 mod job_files;

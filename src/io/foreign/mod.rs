@@ -12,6 +12,7 @@ pub mod dpx;
 pub mod png;
 mod raw;
 mod stream;
+pub mod tiff;
 
 use exr::meta::attribute::{AttributeValue, ChannelDescription, SampleType, Text};
 use exr::meta::header::Header;
@@ -26,6 +27,7 @@ pub enum Format {
     Dpx,
     Cineon,
     Png,
+    Tiff,
 }
 
 impl Format {
@@ -34,6 +36,7 @@ impl Format {
             Format::Dpx => "DPX",
             Format::Cineon => "Cineon",
             Format::Png => "PNG",
+            Format::Tiff => "TIFF",
         }
     }
 }
@@ -44,6 +47,9 @@ pub fn sniff(magic: [u8; 4]) -> Option<Format> {
         b"SDPX" | b"XPDS" => Some(Format::Dpx),
         [0x80, 0x2a, 0x5f, 0xd7] | [0xd7, 0x5f, 0x2a, 0x80] => Some(Format::Cineon),
         [0x89, b'P', b'N', b'G'] => Some(Format::Png),
+        [b'I', b'I', 42, 0] | [b'M', b'M', 0, 42] | [b'I', b'I', 43, 0] | [b'M', b'M', 0, 43] => {
+            Some(Format::Tiff)
+        }
         _ => None,
     }
 }
@@ -89,6 +95,7 @@ pub fn open(file: &File, len: u64, format: Format) -> Result<Foreign, String> {
         Format::Dpx => dpx::open(file, len),
         Format::Cineon => cineon::open(file, len),
         Format::Png => png::open(file, len),
+        Format::Tiff => tiff::open(file, len),
     }
 }
 
