@@ -1,7 +1,7 @@
-//! Feeds arbitrary bytes to exrcomp's DPX and Cineon readers as a file.
+//! Feeds arbitrary bytes to exrcomp's DPX, Cineon, PNG and TIFF readers as a file.
 //!
 //! The input's first byte picks a magic number (DPX big- or little-endian,
-//! Cineon big- or little-endian), which replaces its first four bytes, so
+//! Cineon big- or little-endian, PNG, TIFF either way), which replaces its first four bytes, so
 //! that every input reaches a foreign reader's header checks rather than
 //! the EXR reader's. As `read_exr`: the file is opened with
 //! `ExrFile::open`, every row decoded (`check_part`), then `info` runs on
@@ -23,11 +23,14 @@ fn scratch() -> &'static PathBuf {
     })
 }
 
-const MAGIC: [[u8; 4]; 4] = [
+const MAGIC: [[u8; 4]; 7] = [
     *b"SDPX",
     *b"XPDS",
     [0x80, 0x2a, 0x5f, 0xd7],
     [0xd7, 0x5f, 0x2a, 0x80],
+    [0x89, b'P', b'N', b'G'],
+    [b'I', b'I', 42, 0],
+    [b'M', b'M', 0, 42],
 ];
 
 fuzz_target!(|data: &[u8]| {
@@ -35,7 +38,7 @@ fuzz_target!(|data: &[u8]| {
     if bytes.len() >= 4 {
         // A seed keeps its own magic when it has one.
         if !MAGIC.contains(&bytes[..4].try_into().expect("4 bytes")) {
-            let magic = MAGIC[bytes[0] as usize % 4];
+            let magic = MAGIC[bytes[0] as usize % MAGIC.len()];
             bytes[..4].copy_from_slice(&magic);
         }
     }

@@ -42,6 +42,31 @@ pub struct InputCursor {
     deep: Option<Arc<DeepInput>>,
 }
 
+/// The decode tasks of `jobs` (input, chunk): a chunk each, but one task
+/// for all the chunks of an input whose rows decode only in order (a PNG's
+/// or JPEG's stream, `ExrFile::sequential`), so that they are asked in order.
+fn in_tasks(inputs: &[InputCursor], jobs: Vec<(usize, usize)>) -> Vec<Vec<(usize, usize)>> {
+    let mut tasks: Vec<Vec<(usize, usize)>> = Vec::new();
+    let mut sequential: Vec<Option<usize>> = vec![None; inputs.len()];
+    for (i, k) in jobs {
+        if !inputs[i].file.sequential() {
+            tasks.push(vec![(i, k)]);
+            continue;
+        }
+        match sequential[i] {
+            Some(task) => tasks[task].push((i, k)),
+            None => {
+                sequential[i] = Some(tasks.len());
+                tasks.push(vec![(i, k)]);
+            }
+        }
+    }
+    for task in tasks.iter_mut() {
+        task.sort_unstable();
+    }
+    tasks
+}
+
 impl InputCursor {
     /// Reads `level` of `part`; `window`: the level's data window, or an
     /// empty one to read nothing.
@@ -144,13 +169,21 @@ pub fn decode_strip(
         })
         .filter(|&(i, k)| !skip(i, k))
         .collect();
-    let decoded: Vec<(usize, usize, UncompressedBlock)> = jobs
+    let decoded: Vec<(usize, usize, UncompressedBlock)> = in_tasks(inputs, jobs)
         .par_iter()
         .map(stage_time::tasks(
             Stage::Decode,
-            |&(i, k): &(usize, usize)| Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?)),
+            |task: &Vec<(usize, usize)>| {
+                let decode = |&(i, k): &(usize, usize)| {
+                    Ok((i, k, inputs[i].file.decode_chunk(inputs[i].part, k)?))
+                };
+                task.iter().map(decode).collect::<Result<Vec<_>>>()
+            },
         ))
-        .collect::<Result<_>>()?;
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .flatten()
+        .collect();
 
     let mut blocks: Vec<Vec<(usize, UncompressedBlock)>> = inputs
         .iter_mut()

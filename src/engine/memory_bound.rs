@@ -28,7 +28,7 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// ```text
 /// Σ_inputs max((1 + c_i) (A_i + 2 L_i) + 2 A_i, F_i + 2 L_i + c_i min(T L_i, F_i + 2 L_i)) R_i b_i
 ///     + max_live Σ W_n (S_n + 2 h_n) b_n + (4 + c_o + 2 B) S W b_o
-///     + max_n T scratch_n + T codec + 10 MiB
+///     + max_n T scratch_n + T codec + Σ_inputs D_i + 10 MiB
 /// ```
 ///
 /// with `W` and `S` the output's width and strip rows (at most the rows
@@ -48,7 +48,9 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// one after another; `codec` each thread's ZIP buffers
 /// (`codec_per_thread`), which hold what a ZIP input inflates and a ZIP
 /// output transforms: `c_i` is 1 for a ZIP input (2 otherwise), `c_o` 0
-/// for a ZIP output (1 otherwise).
+/// for a ZIP output (1 otherwise). `D_i` is what a foreign input's row
+/// reader holds (`ExrFile::decoder_bytes`: a TIFF's strip, a PNG's
+/// inflate state and row; 0 for EXR, DPX and Cineon).
 pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
     let graph = plan.graph(job);
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
@@ -78,7 +80,9 @@ pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
     let encode = strips * s * width * bytes(&plan.header.channels.list);
     let scratch = scratch(plan, graph, &spans) * threads;
     let codec = codec_per_thread(plan, job) * threads;
-    decode + windows as u64 + encode + scratch + codec + PROGRAM
+    // A foreign input's row reader (io::foreign::Rows::resident).
+    let readers: u64 = plan.inputs.iter().map(|f| f.decoder_bytes()).sum();
+    decode + windows as u64 + encode + scratch + codec + readers + PROGRAM
 }
 
 fn is_zip(compression: Compression) -> bool {

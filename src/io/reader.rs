@@ -248,6 +248,21 @@ impl ExrFile {
         self.foreign.as_ref().map(|(format, _)| *format)
     }
 
+    /// Whether the file's rows decode only in order, from its start (a
+    /// PNG's stream): its readers ask for them in order, or each row asked
+    /// before the last one read starts the decoding over.
+    pub fn sequential(&self) -> bool {
+        self.foreign
+            .as_ref()
+            .is_some_and(|(_, rows)| rows.sequential())
+    }
+
+    /// Bytes the file's row reader holds while it is read (a TIFF's strip,
+    /// a PNG's inflate state): the memory bound's share of it.
+    pub fn decoder_bytes(&self) -> u64 {
+        self.foreign.as_ref().map_or(0, |(_, rows)| rows.resident())
+    }
+
     /// Row `index` of a foreign file's one part, in an uncompressed
     /// block's layout.
     fn foreign_row(&self, index: usize) -> Result<Option<Vec<u8>>> {
@@ -598,6 +613,10 @@ impl ExrFile {
     /// parallel; each chunk's bytes are freed once it is checked.
     pub fn check_part(&self, part: usize) -> Result<()> {
         self.check_codec(part)?;
+        if self.sequential() {
+            return (0..self.header(part).chunk_count)
+                .try_for_each(|k| self.decode_chunk(part, k).map(drop));
+        }
         (0..self.header(part).chunk_count)
             .into_par_iter()
             .try_for_each(|k| {

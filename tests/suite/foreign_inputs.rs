@@ -202,7 +202,7 @@ fn value(code: u32, bits: u8, packing: u16) -> f32 {
 }
 
 /// Transcodes `input` to `output`, which must succeed.
-fn transcode(input: &Path, output: &Path, args: &[&str]) {
+pub fn transcode(input: &Path, output: &Path, args: &[&str]) {
     let mut all = vec!["transcode", s(input), "-o", s(output), "-q"];
     all.extend(args);
     let out = run(&all);
@@ -233,7 +233,7 @@ fn assert_reads(dpx: &Dpx, exr: &Path, what: &str) {
 
 /// `oiiotool IN -d half|float -o REF` and `idiff -fail 0 REF OURS`, when
 /// both peers are installed.
-fn assert_as_oiiotool(input: &Path, ours: &Path, float: bool) {
+pub fn assert_as_oiiotool(input: &Path, ours: &Path, float: bool) {
     let (Some(oiiotool), Some(idiff)) = (peer("oiiotool"), peer("idiff")) else {
         return;
     };
@@ -546,7 +546,7 @@ fn a_cineon_file_reads_as_its_codes() {
 }
 
 /// `../shared/foreign-images`, or `None` (a skipped check).
-fn foreign_images() -> Option<PathBuf> {
+pub fn foreign_images() -> Option<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/foreign-images");
     if root.is_dir() {
         return Some(root);

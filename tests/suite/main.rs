@@ -17,6 +17,8 @@ mod diffrender_and_zmerge;
 mod farm;
 mod first_run;
 mod foreign_inputs;
+mod foreign_png;
+mod foreign_tiff;
 mod grades;
 mod hostile;
 mod input_opens;

@@ -9,7 +9,10 @@
 
 pub mod cineon;
 pub mod dpx;
+pub mod png;
 mod raw;
+mod stream;
+pub mod tiff;
 
 use exr::meta::attribute::{AttributeValue, ChannelDescription, SampleType, Text};
 use exr::meta::header::Header;
@@ -23,6 +26,8 @@ use std::ops::Range;
 pub enum Format {
     Dpx,
     Cineon,
+    Png,
+    Tiff,
 }
 
 impl Format {
@@ -30,6 +35,8 @@ impl Format {
         match self {
             Format::Dpx => "DPX",
             Format::Cineon => "Cineon",
+            Format::Png => "PNG",
+            Format::Tiff => "TIFF",
         }
     }
 }
@@ -39,6 +46,10 @@ pub fn sniff(magic: [u8; 4]) -> Option<Format> {
     match &magic {
         b"SDPX" | b"XPDS" => Some(Format::Dpx),
         [0x80, 0x2a, 0x5f, 0xd7] | [0xd7, 0x5f, 0x2a, 0x80] => Some(Format::Cineon),
+        [0x89, b'P', b'N', b'G'] => Some(Format::Png),
+        [b'I', b'I', 42, 0] | [b'M', b'M', 0, 42] | [b'I', b'I', 43, 0] | [b'M', b'M', 0, 43] => {
+            Some(Format::Tiff)
+        }
         _ => None,
     }
 }
@@ -51,6 +62,19 @@ pub trait Rows: Send + Sync {
     /// an error says what is wrong in a few words (the caller names the
     /// file).
     fn read(&self, file: &File, rows: Range<usize>) -> Result<Vec<u8>, String>;
+
+    /// Whether rows decode only in order from the image's top (a
+    /// compressed stream): a row asked before the last one read starts
+    /// the decoding over, so readers ask in order (`ExrFile::sequential`).
+    fn sequential(&self) -> bool {
+        false
+    }
+
+    /// The bytes the reader holds between reads (decoder state, a strip
+    /// decoded): its term in the memory bound.
+    fn resident(&self) -> u64 {
+        0
+    }
 }
 
 /// A foreign file opened: its format, the header it is read as and the
@@ -70,6 +94,8 @@ pub fn open(file: &File, len: u64, format: Format) -> Result<Foreign, String> {
     match format {
         Format::Dpx => dpx::open(file, len),
         Format::Cineon => cineon::open(file, len),
+        Format::Png => png::open(file, len),
+        Format::Tiff => tiff::open(file, len),
     }
 }
 
