@@ -4,6 +4,8 @@
 
 mod attributes;
 mod bench;
+mod bench_load;
+mod bench_report;
 mod blur;
 #[cfg(feature = "colour")]
 mod colour;
