@@ -33,5 +33,5 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     // The `info` command: the same reading plus formatting.
-    let _ = exrcomp::info::describe(path);
+    let _ = exrcomp::tools::info::describe(path);
 });

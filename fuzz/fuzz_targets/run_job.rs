@@ -58,7 +58,7 @@ fn s(path: &Path) -> &str {
 fn run(args: &[&str]) -> exrcomp::error::Result<()> {
     let cli = Cli::try_parse_from(std::iter::once("exrcomp").chain(args.iter().copied()))
         .expect("the fuzz target's command lines parse");
-    exrcomp::commands::run(cli.command)
+    exrcomp::cli::commands::execute(cli.command).map(drop)
 }
 
 fuzz_target!(|data: &[u8]| {

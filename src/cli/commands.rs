@@ -162,7 +162,8 @@ fn selection(layers: &LayerArgs) -> Selection {
 }
 
 /// An operation's job: its graph built from its declaration, after a first
-/// pass over the inputs for what it measures (none in a dry run).
+/// pass over the inputs for what it measures (in a dry run, what needs no
+/// pixels, said).
 fn operation(call: Invocation) -> Result<Option<DryRun>> {
     let op = call.op;
     let mut args = Args {
@@ -176,9 +177,16 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
     let job = |inputs: &[String], graph, header| {
         input_job(inputs, &call.output, graph, header, &call.layers, &call.run)
     };
-    if let (Some(measure), false) = (op.measure, call.run.dry_run) {
+    if let Some(measure) = op.measure {
         let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
-        args.values.extend(measure(&args, &first)?);
+        let measured = measure(&args, &first, call.run.dry_run)?;
+        if call.run.dry_run && !call.run.quiet {
+            measured
+                .notes
+                .iter()
+                .for_each(|n| eprintln!("{}: {n}", op.name));
+        }
+        args.values.extend(measured.values);
     }
     if let Some(factor) = call.run.proxy_scale {
         op.scale_lengths(&mut args, factor as f64)

@@ -5,7 +5,7 @@
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
 use crate::io::sequence::{split_time, InputTime};
-use crate::ops::declare::{Args, Operation};
+use crate::ops::declare::{Args, Operation, REPEATED};
 use crate::ops::layers::Selection;
 use crate::run::settings::{RunArgs, WriteArgs};
 use clap::{Args as _, FromArgMatches as _};
@@ -258,7 +258,11 @@ impl<'a> Node<'a> {
         let mut values = BTreeMap::new();
         for param in op.params {
             if let Some(value) = self.get(param.name) {
-                let text = as_text(value.get_ref()).or_else(|m| at.error(value.span(), m))?;
+                let text = match param.repeats {
+                    true => repeated(value.get_ref()),
+                    false => as_text(value.get_ref()),
+                };
+                let text = text.or_else(|m| at.error(value.span(), m))?;
                 (param.check)(&text).or_else(|m| at.error(value.span(), m))?;
                 let text = if param.file {
                     beside(at.path, &text)
@@ -333,6 +337,20 @@ fn as_text(value: &Value) -> std::result::Result<String, String> {
             .join(","),
         _ => return Err("expected a string, a number, true or false, or a list".into()),
     })
+}
+
+/// A repeated parameter's values (a list of strings, or one) as `Args`
+/// holds them: one a line.
+fn repeated(value: &Value) -> std::result::Result<String, String> {
+    match value {
+        Value::String(text) => Ok(text.clone()),
+        Value::Array(items) if items.iter().all(Value::is_str) => Ok(items
+            .iter()
+            .filter_map(Value::as_str)
+            .collect::<Vec<_>>()
+            .join(&REPEATED.to_string())),
+        _ => Err("expected a string or a list of strings".into()),
+    }
 }
 
 /// Levenshtein distance, for "did you mean".

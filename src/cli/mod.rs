@@ -5,7 +5,7 @@ pub mod command_line;
 pub mod commands;
 pub mod job_file;
 
-use crate::ops::declare::Operation;
+use crate::ops::declare::{Operation, REPEATED};
 use crate::run::settings::{parse_level, CompressionName, LayerArgs, PartArgs, RunArgs};
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueHint};
 use std::collections::BTreeMap;
@@ -45,7 +45,7 @@ pub struct Cli {
     /// Worker threads (default: one per core).
     /// (At most a farm worker's: a local run is held to this machine's
     /// cores after parsing, `refuse_local_threads`.)
-    #[arg(long, global = true, help_heading = "Run control", allow_negative_numbers = true, value_parser = crate::params::parse_farm_threads)]
+    #[arg(long, global = true, help_heading = crate::run::settings::RUN_CONTROL, allow_negative_numbers = true, value_parser = crate::params::parse_farm_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -437,6 +437,9 @@ fn subcommand(op: &'static Operation) -> clap::Command {
         if param.flag {
             arg = arg.action(ArgAction::SetTrue);
         } else {
+            if param.repeats {
+                arg = arg.action(ArgAction::Append);
+            }
             let check = param.check;
             arg = arg
                 .required(param.required())
@@ -488,9 +491,13 @@ impl FromArgMatches for Invocation {
         let values = op
             .params
             .iter()
-            .filter_map(|p| match p.flag {
-                true => m.get_flag(p.name).then(|| (p.name, "true".to_string())),
-                false => m.get_one::<String>(p.name).map(|v| (p.name, v.clone())),
+            .filter_map(|p| match (p.flag, p.repeats) {
+                (true, _) => m.get_flag(p.name).then(|| (p.name, "true".to_string())),
+                (false, false) => m.get_one::<String>(p.name).map(|v| (p.name, v.clone())),
+                (false, true) => (m.get_many::<String>(p.name)).map(|values| {
+                    let values: Vec<&str> = values.map(String::as_str).collect();
+                    (p.name, values.join(&REPEATED.to_string()))
+                }),
             })
             .collect();
         Ok(Invocation {

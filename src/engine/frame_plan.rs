@@ -245,7 +245,7 @@ fn plan_frame(
     let geometry = Geometry::of(job, &opened, graph)?;
     let window = geometry.window;
     let (mut header, fingerprint) = output_header(job, &opened, graph, &channels, &geometry)?;
-    let (carried, carried_headers) = carried_parts(job, &opened, &header, &fingerprint)?;
+    let (carried, carried_headers) = carried_parts(job, &opened, &mut header, &fingerprint)?;
     check_layout(job, &opened, &header, carried)?;
     // The output's block rows: scanline blocks, or tile rows.
     let lines = output_grid(&header).block.y();
@@ -569,6 +569,13 @@ fn output_header(
         header.shared_attributes.display_window = geometry.display.window;
         header.shared_attributes.pixel_aspect = geometry.display.pixel_aspect;
     }
+    // The ops' own edits (a colour conversion's destination), under the user's.
+    if let HeaderBase::Input(i) = job.header_base {
+        graph
+            .edits(i)
+            .iter()
+            .for_each(|edit| edit.apply(&mut header));
+    }
     header.deep = false;
     header.deep_data_version = None;
     header.max_samples_per_pixel = None;
@@ -586,8 +593,13 @@ fn output_header(
     let files = (opened.inputs.iter().map(Arc::as_ref)).chain(merged.map(|(f, _)| f.as_ref()));
     let fingerprint = fingerprint::of_frame(job, opened.sources, files);
     fingerprint::stamp(&mut header, &fingerprint);
-    if let Some(compression) = job.compression {
-        header.compression = compression;
+    let foreign = (opened.header_file(job)).is_some_and(|f| f.format().is_some());
+    match job.compression {
+        Some(compression) => header.compression = compression,
+        // A DPX or Cineon header input is uncompressed: written as ZIP, as
+        // oiiotool writes it, not as an uncompressed EXR larger than it.
+        None if foreign => header.compression = exr::prelude::Compression::ZIP16,
+        None => {}
     }
     header.blocks = output_blocks(job, &header);
     header.line_order = LineOrder::Increasing;
@@ -623,11 +635,13 @@ fn output_blocks(job: &Job, header: &Header) -> BlockDescription {
 }
 
 /// The input whose other parts the output carries (`FramePlan::carried`),
-/// and its part headers with the user's edits and the fingerprint.
+/// and its part headers with the user's edits and the fingerprint. The
+/// exr crate writes one `chromaticities` for every part: where the written
+/// part's are not the others' (a colour conversion's), no part has any.
 fn carried_parts(
     job: &Job,
     opened: &Opened,
-    header: &Header,
+    header: &mut Header,
     fingerprint: &str,
 ) -> Result<(Option<usize>, Vec<Header>)> {
     let carried = match job.header_base {
@@ -641,7 +655,7 @@ fn carried_parts(
     let Some(i) = carried else {
         return Ok((None, Vec::new()));
     };
-    let carried_headers: Vec<Header> = (opened.inputs[i].meta.headers.iter())
+    let mut carried_headers: Vec<Header> = (opened.inputs[i].meta.headers.iter())
         .map(|part| {
             let mut part = part.clone();
             job.attributes.carry(&mut part, header);
@@ -649,6 +663,14 @@ fn carried_parts(
             part
         })
         .collect();
+    let chromaticities = |h: &Header| h.shared_attributes.chromaticities;
+    if (carried_headers.iter().enumerate())
+        .any(|(p, h)| p != opened.parts[i] && chromaticities(h) != chromaticities(header))
+    {
+        for part in carried_headers.iter_mut().chain([&mut *header]) {
+            part.shared_attributes.chromaticities = None;
+        }
+    }
     check_shared_display(opened, i, header, &carried_headers)?;
     Ok((carried, carried_headers))
 }

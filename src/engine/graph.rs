@@ -1,5 +1,6 @@
 //! The node graph a job runs: inputs, operations, and the node that is written.
 
+use crate::io::attributes::Edit;
 use crate::io::rows::{Rows, RowsMut};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::meta::header::Header;
@@ -97,6 +98,14 @@ pub trait Op: Send + Sync + std::fmt::Debug {
     /// error (a size the op cannot take) ends the frame.
     fn display_window(&self, _inputs: &[Display]) -> Result<Option<Display>, String> {
         Ok(None)
+    }
+
+    /// What the op writes on or removes from the output header's
+    /// attributes when that header is its input's (`Graph::edits`): a
+    /// colour conversion's destination `colorInteropID` and
+    /// `chromaticities`. None by default: every attribute as it was.
+    fn attributes(&self) -> Vec<Edit> {
+        Vec::new()
     }
 
     /// What the op assumes of inputs that may not be what the user meant
@@ -366,6 +375,22 @@ impl Graph {
                 })
             },
         )
+    }
+
+    /// The attribute edits (`Op::attributes`) of the ops on the way from
+    /// input `from` (whose header the output keeps) to the output, in
+    /// order; an op reached from it by more than one way counts once, by
+    /// its first input that is.
+    pub fn edits(&self, from: usize) -> Vec<Edit> {
+        let edits = self.evaluate(
+            |i| (i == from).then(Vec::new),
+            |op, args: &[Option<Vec<Edit>>]| {
+                let mut edits = args.iter().flatten().next()?.clone();
+                edits.extend(op.attributes());
+                Some(edits)
+            },
+        );
+        edits[self.output()].clone().unwrap_or_default()
     }
 
     /// How far the output reaches into the inputs: the deepest sums of

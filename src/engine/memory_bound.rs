@@ -2,8 +2,9 @@
 //! of specs/architecture.md ("Memory bound", and "Regions of interest" for
 //! nodes that stream at another size), which a farm job asks of its workers.
 
-use super::frame_plan::FramePlan;
+use super::frame_plan::{output_grid, FramePlan};
 use super::graph::{Band, Graph, Node};
+use super::plan::Job;
 use super::region::Regions;
 use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
@@ -22,12 +23,12 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
     rows.div_ceil(bands).max(floor).max(1)
 }
 
-/// Bytes at most resident while `plan` runs through `graph`:
+/// Bytes at most resident while `plan` runs through its job's graph:
 ///
 /// ```text
-/// Σ_inputs max(3 (A_i + 2 L_i) + 2 A_i, F_i + 2 L_i + 2 min(T L_i, F_i + 2 L_i)) R_i b_i
-///     + max_live Σ W_n (S_n + 2 h_n) b_n + (5 + 2 B) S W b_o
-///     + max_n T scratch_n + 10 MiB
+/// Σ_inputs max((1 + c_i) (A_i + 2 L_i) + 2 A_i, F_i + 2 L_i + c_i min(T L_i, F_i + 2 L_i)) R_i b_i
+///     + max_live Σ W_n (S_n + 2 h_n) b_n + (4 + c_o + 2 B) S W b_o
+///     + max_n T scratch_n + T codec + 10 MiB
 /// ```
 ///
 /// with `W` and `S` the output's width and strip rows (at most the rows
@@ -41,11 +42,15 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// (`writer::IN_FLIGHT`), each with its bytes laid out. ZIP chunks decode
 /// into the strip (`F_i` is 0 in the second term). An input read whole
 /// (its span its whole region: a turn near 90 degrees, readers that
-/// disagree) is decoded once, its first term `(S_i + 2 L_i + S_i + 2 min(T
-/// L_i, S_i + 2 L_i)) R_i b_i`, `2 min(..) R_i b_i` for ZIP. `scratch_n` is
-/// a band's own buffers (`Op::scratch`), the nodes computed one after
-/// another.
-pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
+/// disagree) is decoded once, its first term `(S_i + 2 L_i + S_i + c_i
+/// min(T L_i, S_i + 2 L_i)) R_i b_i`, `c_i min(..) R_i b_i` for ZIP.
+/// `scratch_n` is a band's own buffers (`Op::scratch`), the nodes computed
+/// one after another; `codec` each thread's ZIP buffers
+/// (`codec_per_thread`), which hold what a ZIP input inflates and a ZIP
+/// output transforms: `c_i` is 1 for a ZIP input (2 otherwise), `c_o` 0
+/// for a ZIP output (1 otherwise).
+pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
+    let graph = plan.graph(job);
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
     let threads = rayon::current_num_threads() as u64;
     let spans = spanned_rows(graph, &plan.regions, plan.computed, plan.strip_rows);
@@ -68,9 +73,55 @@ pub fn memory_bound(plan: &FramePlan, graph: &Graph) -> u64 {
     });
     let width = plan.computed.size.width() as u64;
     let waiting = 2 * crate::io::writer::IN_FLIGHT as u64;
-    let encode = (5 + waiting) * s * width * bytes(&plan.header.channels.list);
+    // A ZIP block's transform is in the threads' codec buffers.
+    let strips = 5 + waiting - deflates(plan, job) as u64;
+    let encode = strips * s * width * bytes(&plan.header.channels.list);
     let scratch = scratch(plan, graph, &spans) * threads;
-    decode + windows as u64 + encode + scratch + PROGRAM
+    let codec = codec_per_thread(plan, job) * threads;
+    decode + windows as u64 + encode + scratch + codec + PROGRAM
+}
+
+fn is_zip(compression: Compression) -> bool {
+    matches!(compression, Compression::ZIP1 | Compression::ZIP16)
+}
+
+/// Whether the output's blocks are deflated here (`zip::compress`).
+fn deflates(plan: &FramePlan, job: &Job) -> bool {
+    job.media.is_none() && is_zip(plan.header.compression)
+}
+
+/// Whether input `i`'s chunks are inflated here (`zip::unpack`).
+fn inflates(plan: &FramePlan, i: usize) -> bool {
+    plan.deep[i].is_none() && is_zip(plan.header_of(i).compression)
+}
+
+/// Bytes each pool thread keeps all run once it has inflated or deflated a
+/// ZIP block (the thread-locals of `zip.rs` and `deflate.rs`, reused and
+/// never freed, so on every thread however few blocks a strip has): the
+/// largest block inflated or transformed, the deflate data of a block read
+/// with its padding, the deflate output and the compressors.
+fn codec_per_thread(plan: &FramePlan, job: &Job) -> u64 {
+    let block_bytes = |block: exr::math::Vec2<usize>, header: &exr::meta::header::Header| {
+        (block.x() * block.y() * header.channels.bytes_per_pixel) as u64
+    };
+    let read = (0..plan.inputs.len())
+        .filter(|&i| inflates(plan, i))
+        .map(|i| block_bytes(plan.levels[i].block, plan.header_of(i)))
+        .max()
+        .unwrap_or(0);
+    let written = match deflates(plan, job) {
+        true => block_bytes(output_grid(&plan.header).block, &plan.header),
+        false => 0,
+    };
+    let padded = match read {
+        0 => 0,
+        _ => read + crate::io::zip::PADDING as u64,
+    };
+    let deflated = match written {
+        0 => 0,
+        _ => written + written / 512 + crate::io::deflate::state_bytes(job.zip_level) as u64,
+    };
+    read.max(written) + padded + deflated
 }
 
 /// Input `i`'s decode terms in samples of a pixel (times its bytes per
@@ -96,13 +147,15 @@ fn decode_bytes(
     // which becomes the input's window.
     let direct = decodes_direct(plan, graph, i);
     let apart = |rows: u64| if direct { 0 } else { rows + 2 * lines };
-    let in_flight = |rows: u64| (threads * lines).min(rows + 2 * lines);
+    // A chunk's bytes read and inflated per thread; ZIP inflates into the
+    // thread's own buffer (`codec_per_thread`).
+    let copies = 2 - inflates(plan, i) as u64;
+    let in_flight = |rows: u64| copies * (threads * lines).min(rows + 2 * lines);
     let rows = match whole {
         // Decoded once: its chunks, the strip built of them (unless they
-        // were decoded into it), and a chunk's bytes read and inflated per
-        // thread.
-        true if direct => 2 * in_flight(rows),
-        true => apart(rows) + rows + 2 * in_flight(rows),
+        // were decoded into it), and the chunks in flight.
+        true if direct => in_flight(rows),
+        true => apart(rows) + rows + in_flight(rows),
         // The first strip reads the rows of its span (the window then
         // holds them); each later one only those its span gained: its
         // chunks read, inflated and decoded, the strip built of them and
@@ -112,7 +165,7 @@ fn decode_bytes(
         false => {
             let (first, later) = read;
             let later = later.max(s.min(first));
-            (3 * (later + 2 * lines) + 2 * later).max(apart(first) + 2 * in_flight(first))
+            ((1 + copies) * (later + 2 * lines) + 2 * later).max(apart(first) + in_flight(first))
         }
     };
     rows * width

@@ -516,6 +516,24 @@ impl Edits {
     }
 }
 
+/// An attribute an operation writes on its output's header or removes
+/// from it (`Op::attributes`: a colour conversion's destination), before
+/// the user's edits.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Edit {
+    Set(&'static str, Box<AttributeValue>),
+    Remove(&'static str),
+}
+
+impl Edit {
+    pub fn apply(&self, header: &mut Header) {
+        match self {
+            Edit::Set(name, value) => set(header, name, (**value).clone()),
+            Edit::Remove(name) => remove(header, name.as_bytes()),
+        }
+    }
+}
+
 /// The value of attribute `name` in `header`, wherever the crate keeps it.
 fn find(header: &Header, name: &[u8]) -> Option<AttributeValue> {
     header
@@ -533,6 +551,9 @@ fn set(header: &mut Header, name: &str, value: AttributeValue) {
         ("pixelAspectRatio", V::F32(v)) => header.shared_attributes.pixel_aspect = v,
         ("screenWindowWidth", V::F32(v)) => header.own_attributes.screen_window_width = v,
         ("screenWindowCenter", V::FloatVec2(v)) => header.own_attributes.screen_window_center = v,
+        ("chromaticities", V::Chromaticities(v)) => {
+            header.shared_attributes.chromaticities = Some(v)
+        }
         (name, value) => {
             remove(header, name.as_bytes());
             let name = Text::from_slice_unchecked(name.as_bytes());

@@ -3,6 +3,7 @@
 //! names of its enumerations.
 
 use super::text::Utf8Text;
+use clap::ValueEnum;
 use exr::math::{RoundingMode, Vec2};
 use exr::meta::attribute::{
     AttributeValue, BlockType, EnvironmentMap, IntegerBounds, LevelMode, LineOrder, SampleType,
@@ -148,20 +149,96 @@ pub fn pixel_type(sample: SampleType) -> (&'static str, &'static str) {
 }
 
 /// A compression's name (as `--compression` spells it) and exrheader's words.
-pub fn compression(c: Compression) -> (&'static str, &'static str) {
-    match c {
-        Compression::Uncompressed => ("none", "none"),
-        Compression::RLE => ("rle", "run-length encoding"),
-        Compression::ZIP1 => ("zips", "zip, individual scanlines"),
-        Compression::ZIP16 => ("zip", "zip, multi-scanline blocks"),
-        Compression::PIZ => ("piz", "piz"),
-        Compression::PXR24 => ("pxr24", "pxr24"),
-        Compression::B44 => ("b44", "b44"),
-        Compression::B44A => ("b44a", "b44a"),
-        Compression::DWAA(_) => ("dwaa", "dwa, small scanline blocks"),
-        Compression::DWAB(_) => ("dwab", "dwa, medium scanline blocks"),
-        Compression::HTJ2K32 => ("htj2k32", "htj2k, 32-scanline blocks"),
-        Compression::HTJ2K256 => ("htj2k256", "htj2k, 256-scanline blocks"),
+pub fn compression(c: Compression) -> (String, &'static str) {
+    match (CompressionName::of(c), c) {
+        (Some(name), _) => (name.name(), name.words()),
+        // Read, never written.
+        (None, Compression::HTJ2K32) => ("htj2k32".into(), "htj2k, 32-scanline blocks"),
+        (None, _) => ("htj2k256".into(), "htj2k, 256-scanline blocks"),
+    }
+}
+
+/// The compressions exrcomp writes, by the names `--compression`, the job
+/// file's `compression` (any case) and `info` give them: the one list of
+/// them, each variant's name its clap name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum CompressionName {
+    #[value(name = "none")]
+    Uncompressed,
+    Rle,
+    Zips,
+    Zip,
+    Piz,
+    Pxr24,
+    B44,
+    B44a,
+    Dwaa,
+    Dwab,
+}
+
+impl CompressionName {
+    /// The names, as help and errors list them.
+    pub fn names() -> String {
+        let names: Vec<String> = Self::value_variants()
+            .iter()
+            .filter_map(|c| c.to_possible_value())
+            .map(|v| v.get_name().to_string())
+            .collect();
+        names.join(", ")
+    }
+
+    pub fn parse(text: &str) -> Result<Self, String> {
+        Self::from_str(text, true).map_err(|_| {
+            let name = text.to_ascii_lowercase();
+            format!("unknown compression '{name}' ({})", Self::names())
+        })
+    }
+
+    /// The compression, DWA at `dwa_level`.
+    pub fn compression(self, dwa_level: f32) -> Compression {
+        match self {
+            Self::Uncompressed => Compression::Uncompressed,
+            Self::Rle => Compression::RLE,
+            Self::Zips => Compression::ZIP1,
+            Self::Zip => Compression::ZIP16,
+            Self::Piz => Compression::PIZ,
+            Self::Pxr24 => Compression::PXR24,
+            Self::B44 => Compression::B44,
+            Self::B44a => Compression::B44A,
+            Self::Dwaa => Compression::DWAA(Some(dwa_level)),
+            Self::Dwab => Compression::DWAB(Some(dwa_level)),
+        }
+    }
+
+    /// The one `c` is, if exrcomp writes it.
+    pub fn of(c: Compression) -> Option<Self> {
+        let kind = std::mem::discriminant(&c);
+        let same = |name: &&Self| std::mem::discriminant(&name.compression(0.0)) == kind;
+        Self::value_variants().iter().find(same).copied()
+    }
+
+    /// Its name.
+    pub fn name(self) -> String {
+        let value = self
+            .to_possible_value()
+            .expect("every compression is named");
+        value.get_name().to_string()
+    }
+
+    /// exrheader's words for it.
+    fn words(self) -> &'static str {
+        match self {
+            Self::Uncompressed => "none",
+            Self::Rle => "run-length encoding",
+            Self::Zips => "zip, individual scanlines",
+            Self::Zip => "zip, multi-scanline blocks",
+            Self::Piz => "piz",
+            Self::Pxr24 => "pxr24",
+            Self::B44 => "b44",
+            Self::B44a => "b44a",
+            Self::Dwaa => "dwa, small scanline blocks",
+            Self::Dwab => "dwa, medium scanline blocks",
+        }
     }
 }
 
@@ -256,7 +333,31 @@ fn g(x: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::g;
+    use super::*;
+
+    #[test]
+    fn compression_names_are_listed_once_and_read_in_any_case() {
+        assert_eq!(
+            CompressionName::names(),
+            "none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab"
+        );
+        assert_eq!(CompressionName::parse("ZIPS"), Ok(CompressionName::Zips));
+        assert_eq!(
+            CompressionName::parse("none").map(|c| c.compression(45.0)),
+            Ok(Compression::Uncompressed)
+        );
+        // exrheader's words and the names, from the one list.
+        assert_eq!(
+            compression(Compression::DWAB(None)),
+            ("dwab".to_string(), "dwa, medium scanline blocks")
+        );
+        assert_eq!(CompressionName::of(Compression::HTJ2K32), None);
+        let refused = CompressionName::parse("LZW").unwrap_err();
+        assert!(
+            refused.starts_with("unknown compression 'lzw' (none, rle,"),
+            "{refused}"
+        );
+    }
 
     #[test]
     fn numbers_print_as_cpp_streams_print_them() {

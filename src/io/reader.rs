@@ -6,7 +6,9 @@
 //! memory map would kill the process with SIGBUS.
 
 use super::deep::DeepChunk;
+use super::foreign::{self, Foreign, Format};
 use super::limits::{check_inflation, max_inflation, MAX_BLOCK_BYTES};
+use super::positioned::read_at;
 use super::{standard_attributes, subsampling, tiles, zip};
 use crate::error::{Error, Result};
 use crate::guard::catch_panic;
@@ -96,6 +98,9 @@ pub struct ExrFile {
     sorted_offsets: Vec<u64>,
     /// What the file is, for frames' fingerprints (`identity`).
     identity: u128,
+    /// A DPX or Cineon file: its format and rows (`io::foreign`), read as
+    /// the one uncompressed scanline part of `meta`, a line per chunk.
+    foreign: Option<(Format, Box<dyn foreign::Rows>)>,
 }
 
 /// The file from byte `at` on, as a `Read` of positioned reads (the header
@@ -122,6 +127,13 @@ impl ExrFile {
             .metadata()
             .map_err(|e| err(format!("cannot open: {e}")))?
             .len();
+        let mut magic = [0u8; 4];
+        if file.read_exact_at(&mut magic, 0).is_ok() {
+            if let Some(format) = foreign::sniff(magic) {
+                let opened = foreign::open(&file, len, format).map_err(err)?;
+                return Self::from_foreign(path, frame, file, len, opened).map_err(err);
+            }
+        }
 
         let header = || BufReader::with_capacity(16 << 10, ReadFrom { file: &file, at: 0 });
         let attributes = standard_attributes::attributes(&mut header());
@@ -194,7 +206,58 @@ impl ExrFile {
             offsets,
             sorted_offsets,
             identity,
+            foreign: None,
         })
+    }
+
+    /// A foreign file, `opened`, as a single-part scanline EXR file.
+    fn from_foreign(
+        path: &Path,
+        frame: Option<i64>,
+        file: File,
+        len: u64,
+        opened: Foreign,
+    ) -> std::result::Result<Self, String> {
+        let header = opened.header;
+        let identity = identity(&file, len, opened.header_bytes as u64, &[])?;
+        let meta = MetaData {
+            requirements: exr::meta::Requirements {
+                file_format_version: 2,
+                is_single_layer_and_tiled: false,
+                has_long_names: false,
+                has_deep_data: false,
+                has_multiple_layers: false,
+            },
+            headers: vec![header].into(),
+        };
+        Ok(ExrFile {
+            path: path.to_path_buf(),
+            frame,
+            file,
+            len,
+            meta,
+            offsets: vec![Vec::new()],
+            sorted_offsets: Vec::new(),
+            identity,
+            foreign: Some((opened.format, opened.rows)),
+        })
+    }
+
+    /// The file's format when it is not OpenEXR (DPX, Cineon).
+    pub fn format(&self) -> Option<Format> {
+        self.foreign.as_ref().map(|(format, _)| *format)
+    }
+
+    /// Row `index` of a foreign file's one part, in an uncompressed
+    /// block's layout.
+    fn foreign_row(&self, index: usize) -> Result<Option<Vec<u8>>> {
+        let Some((_, rows)) = &self.foreign else {
+            return Ok(None);
+        };
+        let row = rows
+            .read(&self.file, index..index + 1)
+            .map_err(|m| self.error(format!("row {index}: {m}")))?;
+        Ok(Some(row))
     }
 
     /// A hash of the file's length, modification time, header and offset
@@ -229,6 +292,16 @@ impl ExrFile {
 
     /// Reads chunk `index` of `part` (table order) without decompressing it.
     pub fn read_chunk(&self, part: usize, index: usize) -> Result<Chunk> {
+        if let Some(row) = self.foreign_row(index)? {
+            let y = self.header(part).own_attributes.layer_position.y() + index as i32;
+            return Ok(Chunk {
+                layer_index: part,
+                compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
+                    y_coordinate: y,
+                    compressed_pixels_le: row,
+                }),
+            });
+        }
         let offset = self.offsets[part][index];
         let damaged = |m: &dyn std::fmt::Display| {
             self.error(format!(
@@ -432,6 +505,16 @@ impl ExrFile {
 
     /// Reads and decompresses chunk `index` of `part`.
     pub fn decode_chunk(&self, part: usize, index: usize) -> Result<UncompressedBlock> {
+        if let Some(data) = self.foreign_row(index)? {
+            let width = self.header(part).layer_size.width();
+            let index = BlockIndex {
+                layer: part,
+                pixel_position: Vec2(0, index),
+                pixel_size: Vec2(width, 1),
+                level: Vec2(0, 0),
+            };
+            return Ok(UncompressedBlock { index, data });
+        }
         let chunk = self.read_chunk(part, index)?;
         let header = self.header(part);
         let block = match (&chunk.compressed_block, header.compression) {
@@ -569,22 +652,6 @@ fn deep_chunk(
         layer_index: part,
         compressed_block,
     })
-}
-
-/// `len` bytes of `file` from byte `at`. The offsets were checked against the
-/// file's length when it was opened, so a short read means that it shrank since.
-fn read_at(file: &File, at: u64, len: usize) -> std::result::Result<Vec<u8>, String> {
-    let mut bytes = vec![0; len];
-    file.read_exact_at(&mut bytes, at).map_err(|e| {
-        let end = at + len as u64;
-        match e.kind() {
-            std::io::ErrorKind::UnexpectedEof => {
-                format!("the file was cut short while it was read (bytes {at}..{end} are gone)")
-            }
-            _ => format!("cannot read bytes {at}..{end}: {e}"),
-        }
-    })?;
-    Ok(bytes)
 }
 
 /// The exr crate's validation, which refuses deep parts outright; those get

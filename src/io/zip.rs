@@ -117,7 +117,7 @@ pub fn verify(compressed: &[u8], expected: usize) -> Result<(), String> {
 /// 32 KiB) decoded wholly there, 5x slower than the same pixels in a
 /// scanline block. Decoding stops at the final block, so the zeros are only
 /// read ahead, as libdeflate reads zeros past the end of its input anyway.
-const PADDING: usize = 64;
+pub const PADDING: usize = 64;
 
 thread_local! {
     /// The deflate data of the block being inflated, and its padding.
@@ -149,6 +149,8 @@ fn inflate<'b>(
     let size = PADDED.with(|padded| {
         let mut padded = padded.borrow_mut();
         padded.clear();
+        // Room for the padding too: grown by it alone, the buffer doubled.
+        padded.reserve_exact(n - 6 + PADDING);
         padded.extend_from_slice(&compressed[2..n - 4]);
         padded.resize(n - 6 + PADDING, 0);
         Decompressor::new()

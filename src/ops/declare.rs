@@ -34,13 +34,21 @@ pub struct Operation {
     pub build: fn(&Args, &mut GraphBuilder, &[NodeId]) -> std::result::Result<NodeId, String>,
     /// On the command line, before the graph is built: parameters measured
     /// from the inputs (by a first pass over `job`, an identity graph of
-    /// them) where they were not given.
+    /// them) where they were not given. In a dry run (the `bool`) it reads
+    /// no pixels.
     pub measure: Option<Measure>,
 }
 
-/// Measures parameters (name, value as given on the command line) from a
-/// first pass over the inputs.
-pub type Measure = fn(&Args, &Job) -> Result<Vec<(&'static str, String)>>;
+/// Measures parameters from a first pass over the inputs.
+pub type Measure = fn(&Args, &Job, bool) -> Result<Measured>;
+
+/// Parameters measured: name and value as given on the command line, and
+/// notes saying how, which a dry run prints.
+#[derive(Debug, Default)]
+pub struct Measured {
+    pub values: Vec<(&'static str, String)>,
+    pub notes: Vec<String>,
+}
 
 pub struct Input {
     /// The positional argument's name in `--help`, or the option (`--NAME`)
@@ -129,6 +137,9 @@ pub struct Param {
     pub choices: &'static [&'static str],
     /// A file name (`FileName`): in a job file, relative to its folder.
     pub file: bool,
+    /// Given again for more (`--context A=1 --context B=2`; a job file's
+    /// list of strings): the values as text, one a line (`REPEATED`).
+    pub repeats: bool,
     /// Parses and checks a value (bounds included).
     pub check: fn(&str) -> std::result::Result<(), String>,
     /// A length in pixels (declared `{pixels}`): its value scaled by a
@@ -187,7 +198,11 @@ pub trait Value: Sized {
     const OPTIONAL: bool = false;
     const CHOICES: &'static [&'static str] = &[];
     const FILE: bool = false;
+    const REPEATS: bool = false;
 }
+
+/// Between the values of a parameter that `repeats`, as `Args` holds them.
+pub const REPEATED: char = '\n';
 
 macro_rules! number {
     ($($t:ty),*) => {$(
@@ -322,6 +337,7 @@ macro_rules! params {
                     flag: <$ty as $crate::ops::declare::Value>::FLAG,
                     choices: <$ty as $crate::ops::declare::Value>::CHOICES,
                     file: <$ty as $crate::ops::declare::Value>::FILE,
+                    repeats: <$ty as $crate::ops::declare::Value>::REPEATS,
                     check: |text| params!(@parse $ty, text $(, $bound)?).map(drop),
                     pixels: params!(@pixels $ty $(, $unit)?),
                 },

@@ -6,6 +6,7 @@
 use super::declare::{choice, input, params, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::Op;
+use crate::io::attributes::Edit;
 use crate::io::rows::{Rows, RowsMut};
 use crate::params::{
     Bound, BLACKPOINT, GAMMA, GRADE_GAIN, LIFT, MULTIPLY, OFFSET, SATURATION_FACTOR, STOPS,
@@ -183,6 +184,11 @@ pub trait ColourMap: Send + Sync + std::fmt::Debug + 'static {
     }
     /// Warnings the map owes the run (printed once, unless `--quiet`).
     fn warnings(&self) -> Vec<String> {
+        Vec::new()
+    }
+    /// The attributes it writes on the output (`Op::attributes`): a colour
+    /// conversion's destination.
+    fn attributes(&self) -> Vec<Edit> {
         Vec::new()
     }
 }
@@ -385,6 +391,16 @@ impl<M: ColourMap> Op for Colour<M> {
         _windows: &[IntegerBounds],
     ) -> Vec<String> {
         self.map.warnings()
+    }
+
+    /// The map's attributes when the colour it changes is the image's (the
+    /// unnamed layer's, or every layer's): a named layer's leaves the
+    /// header describing the unnamed one as it was.
+    fn attributes(&self) -> Vec<Edit> {
+        match self.layers.layers.is_empty() || self.layers.all {
+            true => self.map.attributes(),
+            false => Vec::new(),
+        }
     }
 
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {

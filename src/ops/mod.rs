@@ -1,6 +1,12 @@
 //! Compositing operations, one family per file, as pure functions over
 //! strips, each declared once (`declare::Operation`) and listed in `ALL`.
 
+/// The colour config without `--config` or `$OCIO`: OCIO's ACES CG config as
+/// the ocio crate embeds it (v4.0.0, ACES 2.0; PyPI's 2.6 names v5.0.0 so).
+/// Outside `colour` so that a build without that feature (the fuzz crate)
+/// still names it to farm workers.
+pub const BUILTIN_COLOUR_CONFIG: &str = "ocio://cg-config-latest";
+
 pub mod blur;
 #[cfg(feature = "colour")]
 pub mod colour;
@@ -23,6 +29,7 @@ pub mod stereo;
 pub mod testing;
 pub mod transform;
 pub mod vblur;
+pub mod warp;
 pub mod zmerge;
 
 use declare::Operation;

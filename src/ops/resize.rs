@@ -219,18 +219,43 @@ impl Filter {
     }
 
     /// The filter stretched to `width`, at `x` (OpenImageIO's 1-D forms).
+    /// `x` over the radius is `x × (2 / width)` and the gaussian's exp is
+    /// OpenImageIO's `fast_exp`, as its filters compute them (filter.cpp),
+    /// so a weight is its bits.
     pub fn at(self, x: f32, width: f32) -> f32 {
         let x = x.abs();
-        let unit = x * 2.0 / width;
+        let unit = x * (2.0 / width);
         match self {
             Filter::Box => (x <= width * 0.5) as u8 as f32,
             Filter::Triangle => (1.0 - unit).max(0.0),
-            Filter::Gaussian if unit < 1.0 => (-2.0 * unit * unit).exp(),
+            Filter::Gaussian if unit < 1.0 => fast_exp(-2.0 * (unit * unit)),
             Filter::Gaussian => 0.0,
             Filter::Mitchell => mitchell(unit),
             Filter::Lanczos3 => lanczos3(x * 6.0 / width),
         }
     }
+}
+
+/// OpenImageIO's `fast_exp` (fmath.h): `2^(x log2 e)`, the fraction's
+/// power by a degree-5 polynomial (within a few ulps of exp), the whole
+/// part added to the exponent; its constants as it writes them.
+#[allow(clippy::excessive_precision)]
+fn fast_exp(x: f32) -> f32 {
+    let x = (x * std::f32::consts::LOG2_E).clamp(-126.0, 126.0);
+    let m = x as i32;
+    let f = x - m as f32;
+    let f = 1.0 - (1.0 - f);
+    let mut r = 1.33336498402e-3f32;
+    for c in [
+        9.810352697968e-3f32,
+        5.551834031939e-2,
+        0.2401793301105,
+        0.693144857883,
+        1.0,
+    ] {
+        r = f * r + c;
+    }
+    f32::from_bits(r.to_bits().wrapping_add((m as u32) << 23))
 }
 
 /// Mitchell–Netravali, B = C = 1/3, over -1..1 (its -2..2 halved).

@@ -14,8 +14,9 @@
 use super::crop::copy_moved;
 use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::{nearest_only, Filter};
+use super::warp::{SampleMap, Taps, Weights};
 use crate::engine::graph::{union, Band, Carried, Display, GraphBuilder, NodeId, Op};
-use crate::io::rows::{Rows, RowsMut, Samples};
+use crate::io::rows::{Rows, RowsMut};
 use crate::params::{Bound, CENTER, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use std::sync::{Mutex, OnceLock};
@@ -236,18 +237,61 @@ fn sin_cos(degrees: f64) -> (f64, f64) {
 }
 
 impl Params {
-    /// The forward map for display window `display`: translate · centre ·
-    /// rotate · scale · skew · centre⁻¹, built with y up (Nuke's) and
-    /// turned to pixel coordinates (y down) by conjugating with y → -y.
-    fn affine(&self, display: IntegerBounds) -> Affine {
+    /// The inverse map filters sample by, in f32 as OpenImageIO's warp
+    /// builds it (`ImageBufAlgo::rotate`: translate(-centre), rotate,
+    /// translate(centre), Imath's row vectors, y down): the linear part is
+    /// skew, scale and mirrors, then the turn by `-rotate` degrees (its
+    /// sine and cosine in f32, exact at multiples of 90°); with none but a
+    /// turn it is oiiotool's `--rotate` matrix to the bit.
+    fn sampling(&self, display: IntegerBounds) -> SampleMap {
+        let (cx, cy) = self.centre(display);
+        let (s, c) = match (self.rotate / 90.0).fract() == 0.0 {
+            true => {
+                let (s, c) = sin_cos(-self.rotate);
+                (s as f32, c as f32)
+            }
+            false => {
+                let a = (-self.rotate) as f32 * (std::f64::consts::PI / 180.0) as f32;
+                (a.sin(), a.cos())
+            }
+        };
+        let (sx, sy) = (
+            (self.scale.0 * if self.flop { -1.0 } else { 1.0 }) as f32,
+            (self.scale.1 * if self.flip { -1.0 } else { 1.0 }) as f32,
+        );
+        let (kx, ky) = (self.skew.0 as f32, self.skew.1 as f32);
+        // Skew then scale (y up, columns), turned to y down rows.
+        let sk = [sx, sx * kx, sy * ky, sy * (1.0 + ky * kx)];
+        let g = [sk[0], -sk[2], -sk[1], sk[3]];
+        let r = [c, s, -s, c];
+        let linear = [
+            g[0] * r[0] + g[1] * r[2],
+            g[0] * r[1] + g[1] * r[3],
+            g[2] * r[0] + g[3] * r[2],
+            g[2] * r[1] + g[3] * r[3],
+        ];
+        let shift = (self.translate.0 as f32, -self.translate.1 as f32);
+        SampleMap::inverse_of(linear, (cx as f32, cy as f32), shift)
+    }
+
+    /// The pivot in pixel coordinates (y down): `--center`, given from the
+    /// display window's bottom left with y up, else the window's centre.
+    fn centre(&self, display: IntegerBounds) -> (f64, f64) {
         let (left, bottom) = (display.position.x() as f64, display.end().y() as f64);
-        let (cx, cy) = match self.center {
+        match self.center {
             Some(Pair(x, y)) => (left + x, bottom - y),
             None => (
                 left + display.size.width() as f64 / 2.0,
                 bottom - display.size.height() as f64 / 2.0,
             ),
-        };
+        }
+    }
+
+    /// The forward map for display window `display`: translate · centre ·
+    /// rotate · scale · skew · centre⁻¹, built with y up (Nuke's) and
+    /// turned to pixel coordinates (y down) by conjugating with y → -y.
+    fn affine(&self, display: IntegerBounds) -> Affine {
+        let (cx, cy) = self.centre(display);
         let (s, c) = sin_cos(self.rotate);
         let (sx, sy) = (
             self.scale.0 * if self.flop { -1.0 } else { 1.0 },
@@ -317,6 +361,8 @@ struct Maps {
     forward: Affine,
     inverse: Affine,
     exact: bool,
+    /// The inverse as OpenImageIO computes it, where filters sample.
+    sampling: SampleMap,
 }
 
 impl Maps {
@@ -329,6 +375,7 @@ impl Maps {
             forward,
             inverse: forward.inverse(),
             exact: snapped.is_some(),
+            sampling: params.sampling(display),
         }
     }
 }
@@ -456,11 +503,12 @@ impl Op for Transform {
             nearest.clear();
             for c in columns.clone() {
                 let x = out.x + c as i32;
-                let (u, v) = inverse.apply(x as f64 + 0.5, y as f64 + 0.5);
                 if let Some(f) = filter {
-                    weights.push(taps.at(f, u, v));
+                    let (s, t) = maps.sampling.apply(x, y);
+                    weights.push(taps.at(f, s, t));
                 }
                 if any_nearest {
+                    let (u, v) = inverse.apply(x as f64 + 0.5, y as f64 + 0.5);
                     nearest.push(taps.nearest(u, v, input));
                 }
             }
@@ -479,105 +527,6 @@ impl Op for Transform {
         }
         Ok(())
     }
-}
-
-/// Most taps along one axis (lanczos3's six pixels and one).
-const MOST_TAPS: usize = 8;
-
-/// The source pixels `lo..hi`: held and inside the data.
-struct Taps {
-    lo: (i32, i32),
-    hi: (i32, i32),
-}
-
-/// One output pixel's taps: first source column and row, and the weights
-/// along each axis (normalised; none when nothing of the source is near).
-struct Weights {
-    x: i32,
-    y: i32,
-    wx: [f32; MOST_TAPS],
-    wy: [f32; MOST_TAPS],
-    nx: usize,
-    ny: usize,
-}
-
-impl Taps {
-    /// The sample index in `rows` of the pixel holding source point (u, v)
-    /// (pixel coordinates), if it is one of the source pixels.
-    fn nearest(&self, u: f64, v: f64, rows: &Rows) -> Option<usize> {
-        let (x, y) = (u.floor(), v.floor());
-        let inside = |p: f64, lo: i32, hi: i32| p >= lo as f64 && p < hi as f64;
-        (inside(x, self.lo.0, self.hi.0) && inside(y, self.lo.1, self.hi.1))
-            .then(|| rows.row_range(y as i32).start + (x as i32 - rows.x) as usize)
-    }
-
-    /// The taps of `filter` at source point (u, v) (pixel coordinates).
-    fn at(&self, filter: Filter, u: f64, v: f64) -> Weights {
-        let mut w = Weights {
-            x: 0,
-            y: 0,
-            wx: [0.0; MOST_TAPS],
-            wy: [0.0; MOST_TAPS],
-            nx: 0,
-            ny: 0,
-        };
-        let width = filter.width();
-        let radius = width as f64 / 2.0;
-        // Along one axis: taps of centre s (pixel i's centre is i + 0.5)
-        // within the filter's radius, cut to lo..hi, weights over the sum
-        // of all of them (the missing ones count as black).
-        let axis = |s: f64, lo: i32, hi: i32, out: &mut [f32; MOST_TAPS]| -> (i32, usize) {
-            let s = s - 0.5;
-            let first = (s - radius).ceil() as i32;
-            let last = ((s + radius).floor() as i32).min(first + MOST_TAPS as i32 - 1);
-            let mut total = 0.0f32;
-            let (from, to) = (first.max(lo), last.min(hi - 1));
-            for i in first..=last {
-                let weight = filter.at((i as f64 - s) as f32, width);
-                total += weight;
-                if (from..=to).contains(&i) {
-                    out[(i - from) as usize] = weight;
-                }
-            }
-            if to < from || total == 0.0 {
-                return (from, 0);
-            }
-            let n = (to - from + 1) as usize;
-            out[..n].iter_mut().for_each(|w| *w /= total);
-            (from, n)
-        };
-        (w.x, w.nx) = axis(u, self.lo.0, self.hi.0, &mut w.wx);
-        (w.y, w.ny) = axis(v, self.lo.1, self.hi.1, &mut w.wy);
-        w
-    }
-}
-
-impl Weights {
-    /// The weighted sum of `source`'s taps (a plane of `rows`).
-    fn apply(&self, source: &Samples, rows: &Rows) -> f32 {
-        let mut sum = 0.0f32;
-        if self.nx == 0 {
-            return sum;
-        }
-        for (j, &wy) in self.wy[..self.ny].iter().enumerate() {
-            let start = rows.row_range(self.y + j as i32).start + (self.x - rows.x) as usize;
-            let line: f32 = match source {
-                Samples::F16(v) => dot(&self.wx[..self.nx], &v[start..], |s| s.to_f32()),
-                Samples::F32(v) => dot(&self.wx[..self.nx], &v[start..], |s| s),
-                Samples::U32(_) => unreachable!("u32 channels take the nearest sample"),
-            };
-            sum += wy * line;
-        }
-        sum
-    }
-}
-
-fn dot<T: Copy>(weights: &[f32], samples: &[T], value: impl Fn(T) -> f32) -> f32 {
-    weights
-        .iter()
-        .zip(samples)
-        .map(|(&w, &s)| w * value(s))
-        .sum()
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! largest vertical displacement; a longer one is an error, never a cut
 //! streak. Formulas: specs/ops.md, "vblur".
 
-use super::declare::{input, params, Args, Operation, Value};
+use super::declare::{input, params, Args, Measured, Operation, Value};
 use super::layers::Selection;
 use crate::engine::graph::{Band, Op};
 use crate::engine::plan::Job;
@@ -60,14 +60,18 @@ impl Params {
 }
 
 /// The longest streak of the input, where `max_displacement` is not given.
-fn measure(args: &Args, job: &Job) -> crate::error::Result<Vec<(&'static str, String)>> {
+/// Not in a dry run, which reads no pixels.
+fn measure(args: &Args, job: &Job, dry_run: bool) -> crate::error::Result<Measured> {
     let p = Params::read(args).map_err(crate::error::Error::usage)?;
-    if p.max_displacement.is_some() {
-        return Ok(Vec::new());
+    if p.max_displacement.is_some() || dry_run {
+        return Ok(Measured::default());
     }
     let names = [p.vectors.0[0].as_str(), p.vectors.0[1].as_str()];
     let reach = max_over_rows(job, 0, names, |u, v| rows_reached(p.scale, u, v))?;
-    Ok(vec![("max_displacement", reach.to_string())])
+    Ok(Measured {
+        values: vec![("max_displacement", reach.to_string())],
+        notes: Vec::new(),
+    })
 }
 
 #[derive(Debug)]

@@ -531,7 +531,7 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
                 others.push(plans[0].output.clone());
             }
             for plan in plans {
-                bound = memory_bound(&plan, plan.graph(job)).max(bound);
+                bound = memory_bound(&plan, job).max(bound);
             }
         }
         if !run.quiet {

@@ -2,13 +2,20 @@
 //! once: the command line's options are derived from them (clap), and the
 //! job file's write keys are their names (src/cli/job_file.rs).
 
+pub use crate::io::header_text::CompressionName;
 use crate::params::*;
-use clap::{Args, ValueEnum};
-use exr::prelude::Compression;
+use clap::Args;
+
+/// The help's headings the run and write options are grouped under.
+pub const FRAMES: &str = "Frames and sequences";
+pub const LAYERS: &str = "Layers, views and parts";
+pub const OUTPUT: &str = "Output";
+pub const MEDIA: &str = "Review media (.png, .jpg, .tif outputs)";
+pub const RUN_CONTROL: &str = "Run control";
 
 /// Which layers, views and parts an operation works on.
 #[derive(Args, Clone, Default)]
-#[command(next_help_heading = "Layers, views and parts")]
+#[command(next_help_heading = LAYERS)]
 pub struct LayerArgs {
     /// Layer to work on (`diffuse` for diffuse.R, G, B, A); repeatable.
     /// Default: the unnamed layer (R, G, B, A).
@@ -32,7 +39,7 @@ pub struct LayerArgs {
 /// The part of a multi-part input: every command reading EXR inputs takes
 /// it, with or without layers.
 #[derive(Args, Clone, Default)]
-#[command(next_help_heading = "Layers, views and parts")]
+#[command(next_help_heading = LAYERS)]
 pub struct PartArgs {
     /// Part (name or index) of inputs given without `:PART`.
     #[arg(long)]
@@ -45,16 +52,12 @@ pub struct RunArgs {
     /// Frames: A-B, A-B:STEP, or a comma list (default: those on disk).
     /// Frame numbers may be negative (`--frames -3-2`), so a value starting
     /// with `-` is the frames, not an option.
-    #[arg(
-        help_heading = "Frames and sequences",
-        long,
-        allow_hyphen_values = true
-    )]
+    #[arg(help_heading = FRAMES, long, allow_hyphen_values = true)]
     pub frames: Option<String>,
     /// Only the COUNT frames of --frames from FIRST on, FIRST a chunk's
     /// first frame: a farm task named by its first frame alone (OpenCue's
     /// #FRAME_START#, whose #FRAME_END# Cuebot before 1.0 gets wrong).
-    #[arg(help_heading = "Frames and sequences", long, value_name = "FIRST,COUNT", allow_hyphen_values = true, value_parser = parse_chunk_from)]
+    #[arg(help_heading = FRAMES, long, value_name = "FIRST,COUNT", allow_hyphen_values = true, value_parser = parse_chunk_from)]
     pub chunk_from: Option<(i64, usize)>,
     /// What is written and how: the job file's write node takes these keys
     /// too.
@@ -63,65 +66,54 @@ pub struct RunArgs {
     /// libdeflate's effort for ZIP and ZIPS output, 1 (fastest) to 12
     /// (smallest); noisy low-byte halves always take ISA-L's fastest level.
     /// The default 2 writes files within 2.5% of OpenEXR's size.
-    #[arg(help_heading = "Output", long, default_value_t = crate::io::deflate::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
+    #[arg(help_heading = OUTPUT, long, default_value_t = crate::io::deflate::DEFAULT_LEVEL, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=12))]
     pub zip_level: u8,
     /// DWAA and DWAB output's compression level, written as the file's
     /// `dwaCompressionLevel`: higher is smaller and coarser (default 45, as
     /// OpenEXR's).
-    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
+    #[arg(help_heading = OUTPUT, long, allow_negative_numbers = true, value_parser = |t: &str| DWA_LEVEL.parse::<f32>(t))]
     pub dwa_level: Option<f32>,
     /// What a missing input frame does: error (before any work), skip the
     /// output frame, hold the nearest earlier frame, or black.
-    #[arg(
-        help_heading = "Frames and sequences",
-        long,
-        value_enum,
-        default_value = "error"
-    )]
+    #[arg(help_heading = FRAMES, long, value_enum, default_value = "error")]
     pub missing: crate::engine::sources::MissingPolicy,
     /// Skip frames whose output already exists and decodes completely.
-    #[arg(help_heading = "Run control", long)]
+    #[arg(help_heading = RUN_CONTROL, long)]
     pub resume: bool,
     /// Report a frame with bad input and go on with the others (the exit
     /// code is still non-zero).
-    #[arg(help_heading = "Run control", long)]
+    #[arg(help_heading = RUN_CONTROL, long)]
     pub keep_going: bool,
     /// No progress bar and no summary.
-    #[arg(help_heading = "Run control", long, short)]
+    #[arg(help_heading = RUN_CONTROL, long, short)]
     pub quiet: bool,
     /// Print a JSON summary on standard output at the end.
-    #[arg(help_heading = "Run control", long)]
+    #[arg(help_heading = RUN_CONTROL, long)]
     pub json: bool,
     /// Lines on standard output for a log or a farm: a line per frame
     /// (written, kept) by default when it is not a terminal (with --quiet
     /// too); openjd and deadline add their progress lines.
-    #[arg(
-        help_heading = "Run control",
-        long,
-        value_enum,
-        value_name = "FORMAT",
-        conflicts_with = "json"
-    )]
+    #[arg(help_heading = RUN_CONTROL, long, value_enum, value_name = "FORMAT", conflicts_with = "json")]
     pub progress: Option<crate::run::report::FarmLog>,
     /// Check every frame's inputs and the outputs, print the files each
     /// output frame reads and writes (with --json as JSON), decode nothing
     /// and write nothing.
-    #[arg(help_heading = "Run control", long)]
+    #[arg(help_heading = RUN_CONTROL, long)]
     pub dry_run: bool,
     /// Write only rows Y0-Y1 of each frame (on the output's block grid): a
     /// band of a huge plate for one machine; `exrcomp stitch` joins them.
-    #[arg(help_heading = "Frames and sequences", long, allow_hyphen_values = true, value_parser = parse_rows)]
+    #[arg(help_heading = FRAMES, long, allow_hyphen_values = true, value_parser = parse_rows)]
     pub rows: Option<(i32, i32)>,
     /// The most pixels an output frame may have (its data window); by
     /// default 64 times the largest input's (data or display window), at
     /// least 4096x4096, so that a typo's size is refused before it fills
     /// a volume. Generated plates have none.
-    #[arg(help_heading = "Output", long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(help_heading = OUTPUT, long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub max_output_pixels: Option<u64>,
     /// Run the whole graph at this fraction of the size (0.5: half), for
     /// previews: each input resized as it is read (resize's box filter),
     /// each operation's lengths in pixels (radii, regions, shifts) scaled.
-    #[arg(help_heading = "Output", long, allow_negative_numbers = true, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
+    #[arg(help_heading = OUTPUT, long, allow_negative_numbers = true, value_parser = |t: &str| crate::params::PROXY_SCALE.parse::<f32>(t))]
     pub proxy_scale: Option<f32>,
     /// Rows per strip, rounded up to whole output blocks (for tests of strip
     /// boundaries; the default sizes strips by bytes).
@@ -136,80 +128,64 @@ pub struct RunArgs {
 pub struct WriteArgs {
     /// Output compression (each command's help lists the names and says
     /// its default, `compression_default` in src/cli/mod.rs).
-    #[arg(help_heading = "Output", long, value_parser = CompressionName::parse)]
+    #[arg(help_heading = OUTPUT, long, value_parser = CompressionName::parse)]
     pub compression: Option<CompressionName>,
     /// Write tiled files with tiles of WxH pixels (N: NxN), one level
     /// (default: tiles as the background's if it is tiled, else scanlines).
-    #[arg(help_heading = "Output", long, value_parser = parse_tile)]
+    #[arg(help_heading = OUTPUT, long, value_parser = parse_tile)]
     pub tile: Option<exr::math::Vec2<usize>>,
     /// Write scanline files even when the background is tiled.
-    #[arg(help_heading = "Output", long, conflicts_with = "tile")]
+    #[arg(help_heading = OUTPUT, long, conflicts_with = "tile")]
     pub scanline: bool,
     /// Run the operation on every part of a multi-part input instead of one,
     /// each part keeping its own channels, windows and attributes; for
     /// operations of one input (specs/file-format.md, "Parts").
-    #[arg(help_heading = "Frames and sequences", long, conflicts_with = "rows")]
+    #[arg(help_heading = FRAMES, long, conflicts_with = "rows")]
     pub all_parts: bool,
     /// Set an attribute of the output's header: NAME=VALUE, typed as oiiotool
     /// types it (an integer is an int, another number a float, else a
     /// string) or as :TYPE says (string, int, float, double, v2i, v2f, v3i,
     /// v3f, box2i, box2f, m33f, m44f, rational, timecode, keycode; values
     /// of several numbers separated by commas). Repeatable.
-    #[arg(help_heading = "Output", long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
+    #[arg(help_heading = OUTPUT, long = "attrib", value_name = "NAME=VALUE[:TYPE]", value_parser = crate::io::attributes::parse_attrib)]
     pub attribs: Vec<crate::io::attributes::Attrib>,
     /// Erase the output header's attributes of this name, or matching this
     /// glob (`*`, `?`), before --attrib sets any. Repeatable.
-    #[arg(help_heading = "Output", long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
+    #[arg(help_heading = OUTPUT, long = "erase-attrib", value_name = "NAME|GLOB", value_parser = crate::io::attributes::parse_erase)]
     pub erase_attribs: Vec<String>,
     /// Write each frame's timeCode: HH:MM:SS:FF (HH:MM:SS;FF drop-frame) for
     /// the shot's first frame, or @FRAME's (01:00:00:00@1001), counted at
     /// the frame rate; or +N / -N to shift the input's own by N frames.
-    #[arg(help_heading = "Output", long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
+    #[arg(help_heading = OUTPUT, long, value_name = "TIMECODE[@FRAME]|+N|-N", allow_hyphen_values = true, value_parser = crate::io::timecode::parse_spec)]
     pub timecode: Option<crate::io::timecode::TimecodeSpec>,
     /// Frame rate, written as framesPerSecond: N, N/D (24000/1001) or an
     /// NTSC rate as 23.976 (default: the input's).
-    #[arg(help_heading = "Output", long, value_name = "RATE", allow_hyphen_values = true, value_parser = crate::io::attributes::parse_fps)]
+    #[arg(help_heading = OUTPUT, long, value_name = "RATE", allow_hyphen_values = true, value_parser = crate::io::attributes::parse_fps)]
     pub fps: Option<exr::meta::attribute::Rational>,
     /// JPEG output's quality, 1 to 100 (default 90).
-    #[arg(help_heading = "Review media (.png, .jpg, .tif outputs)", long, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=100))]
+    #[arg(help_heading = MEDIA, long, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=100))]
     pub quality: Option<u8>,
     /// Bits per sample: PNG 8 or 16, TIFF 8, 16 or float (scene-linear, as
     /// it is); JPEG 8 (default 8).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
+    #[arg(help_heading = MEDIA, long, value_enum)]
     pub bits: Option<crate::io::media::Bits>,
     /// What turns linear pixels into 8 or 16-bit code values: srgb (the sRGB
     /// curve, clamped; the default) or none (pixels that are display code
     /// values already, after ociodisplay).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
+    #[arg(help_heading = MEDIA, long, value_enum)]
     pub transfer: Option<crate::io::media::Transfer>,
     /// Text drawn into a corner of each frame, white on black; fields:
     /// {frame}, {frame:4} (zero-padded), {timecode}, {file} (the first
     /// input's), {output}, {attr:NAME}.
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_name = "TEXT"
-    )]
+    #[arg(help_heading = MEDIA, long, value_name = "TEXT")]
     pub burn_in: Option<String>,
     /// The burn-in's corner (default bottom-left).
-    #[arg(
-        help_heading = "Review media (.png, .jpg, .tif outputs)",
-        long,
-        value_enum
-    )]
+    #[arg(help_heading = MEDIA, long, value_enum)]
     pub burn_in_corner: Option<crate::io::burn_in::Corner>,
     /// Write a slate first: frame (the shot's first - 1), black, with the
     /// job's output, frames, inputs, timecode, fps and attributes in white;
     /// only by a run that starts at the shot's first frame.
-    #[arg(help_heading = "Output", long)]
+    #[arg(help_heading = OUTPUT, long)]
     pub slate: bool,
 }
 
@@ -309,58 +285,6 @@ pub fn parse_level(text: &str) -> Result<exr::math::Vec2<usize>, String> {
     }
 }
 
-/// An output compression by the name `--compression` and the job file's
-/// `compression` take (any case).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum CompressionName {
-    #[value(name = "none")]
-    Uncompressed,
-    Rle,
-    Zips,
-    Zip,
-    Piz,
-    Pxr24,
-    B44,
-    B44a,
-    Dwaa,
-    Dwab,
-}
-
-impl CompressionName {
-    /// The names, as help and errors list them.
-    pub fn names() -> String {
-        let names: Vec<String> = Self::value_variants()
-            .iter()
-            .filter_map(|c| c.to_possible_value())
-            .map(|v| v.get_name().to_string())
-            .collect();
-        names.join(", ")
-    }
-
-    pub fn parse(text: &str) -> Result<Self, String> {
-        Self::from_str(text, true).map_err(|_| {
-            let name = text.to_ascii_lowercase();
-            format!("unknown compression '{name}' ({})", Self::names())
-        })
-    }
-
-    /// The compression, DWA at `dwa_level`.
-    pub fn compression(self, dwa_level: f32) -> Compression {
-        match self {
-            Self::Uncompressed => Compression::Uncompressed,
-            Self::Rle => Compression::RLE,
-            Self::Zips => Compression::ZIP1,
-            Self::Zip => Compression::ZIP16,
-            Self::Piz => Compression::PIZ,
-            Self::Pxr24 => Compression::PXR24,
-            Self::B44 => Compression::B44,
-            Self::B44a => Compression::B44A,
-            Self::Dwaa => Compression::DWAA(Some(dwa_level)),
-            Self::Dwab => Compression::DWAB(Some(dwa_level)),
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -385,24 +309,6 @@ mod tests {
             "slate",
         ];
         assert_eq!(keys, expected);
-    }
-
-    #[test]
-    fn compression_names_are_listed_once_and_read_in_any_case() {
-        assert_eq!(
-            CompressionName::names(),
-            "none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab"
-        );
-        assert_eq!(CompressionName::parse("ZIPS"), Ok(CompressionName::Zips));
-        assert_eq!(
-            CompressionName::parse("none").map(|c| c.compression(45.0)),
-            Ok(Compression::Uncompressed)
-        );
-        let refused = CompressionName::parse("LZW").unwrap_err();
-        assert!(
-            refused.starts_with("unknown compression 'lzw' (none, rle,"),
-            "{refused}"
-        );
     }
 
     #[test]

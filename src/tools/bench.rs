@@ -171,6 +171,7 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<TimedCommand>
     let range = format!("1-{frames}");
     generate_plates(&plate, (width, height), frames)?;
     let job_file = write_over_blur(&folder, &plate)?;
+    #[cfg_attr(not(feature = "colour"), allow(unused_mut))]
     let mut jobs: Vec<(&str, Vec<String>)> = vec![
         (
             "transcode",

@@ -25,9 +25,11 @@ struct Part {
     checked: String,
 }
 
-/// A file: its size, format version and flags, and parts.
+/// A file: its size, format version and flags, and parts; for a file in
+/// another format (DPX, Cineon), its name instead of the version.
 struct Facts {
     bytes: u64,
+    format: Option<&'static str>,
     version: u8,
     flags: u32,
     parts: Vec<Part>,
@@ -37,6 +39,9 @@ struct Facts {
 /// missing or not decoding.
 fn facts(path: &Path) -> Result<Facts> {
     let file = ExrFile::open(path, None)?;
+    if let Some(format) = file.format() {
+        return foreign_facts(file, format.name());
+    }
     // The version field as the file holds it, as exrheader prints it: the
     // crate's requirements say what it would write, which for a multi-part
     // file with a deep part lacks the non-image bit.
@@ -86,21 +91,50 @@ fn facts(path: &Path) -> Result<Facts> {
     }
     Ok(Facts {
         bytes: file.file_len(),
+        format: None,
         version: (word & 0xff) as u8,
         flags: word & !0xff,
         parts,
     })
 }
 
+/// A DPX or Cineon file's facts: every attribute of the one part it is read
+/// as, and its rows checked.
+fn foreign_facts(file: ExrFile, format: &'static str) -> Result<Facts> {
+    let header = file.header(0);
+    let mut attributes: Vec<(String, AttributeValue)> = (header.all_named_attributes())
+        .map(|(name, value)| (String::from_utf8_lossy(name).into_owned(), value))
+        .collect();
+    attributes.sort_by(|a, b| a.0.as_bytes().cmp(b.0.as_bytes()));
+    file.check_part(0)?;
+    let rows = header.chunk_count;
+    Ok(Facts {
+        bytes: file.file_len(),
+        format: Some(format),
+        version: 0,
+        flags: 0,
+        parts: vec![Part {
+            attributes,
+            chunks: rows,
+            checked: format!("all {rows} rows decode"),
+        }],
+    })
+}
+
 /// Describes `path` as exrheader does, each part followed by its chunk check.
 pub fn describe(path: &Path) -> Result<String> {
     let facts = facts(path)?;
+    let version = match facts.format {
+        Some(format) => format!("file format: {format}, read as one uncompressed scanline part"),
+        None => format!(
+            "file format version: {}, flags 0x{:x}",
+            facts.version, facts.flags
+        ),
+    };
     let mut text = format!(
-        "\nfile {} ({} bytes):\n\nfile format version: {}, flags 0x{:x}\n",
+        "\nfile {} ({} bytes):\n\n{version}\n",
         path.display(),
         facts.bytes,
-        facts.version,
-        facts.flags
     );
     let several = facts.parts.len() > 1;
     for (index, part) in facts.parts.iter().enumerate() {
@@ -117,7 +151,8 @@ pub fn describe(path: &Path) -> Result<String> {
     Ok(text)
 }
 
-/// `describe`'s facts as JSON: `file`, `bytes`, `version`, `flags` and
+/// `describe`'s facts as JSON: `file`, `bytes`, `format` (OpenEXR, DPX,
+/// Cineon), `version`, `flags` (0 for the others) and
 /// `parts`, each part's `attributes` by name as `{"type", "value"}`, its
 /// `chunks` and `checked`.
 pub fn describe_json(path: &Path) -> Result<Value> {
@@ -143,6 +178,7 @@ pub fn describe_json(path: &Path) -> Result<Value> {
     Ok(json!({
         "file": path.display().to_string(),
         "bytes": facts.bytes,
+        "format": facts.format.unwrap_or("OpenEXR"),
         "version": facts.version,
         "flags": facts.flags,
         "parts": parts,

@@ -69,7 +69,7 @@ fn grid_image(kind: &Kind) -> Img {
     }
 }
 
-fn python() -> Option<String> {
+pub fn python() -> Option<String> {
     let python = std::env::var("EXRCOMP_OCIO_PYTHON").unwrap_or_else(|_| "python3".into());
     let found = Command::new(&python)
         .args(["-c", "import PyOpenColorIO, numpy"])

@@ -3,6 +3,7 @@
 //! a retried chunk that finishes what a killed one left.
 
 use crate::common::*;
+use serde_json::{json, Value};
 use std::path::Path;
 use std::process::Command;
 
@@ -58,6 +59,33 @@ fn openjd(openjd: &Path, args: &[&str], cwd: &Path) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
+/// The OpenJD job template at `path` (exrcomp writes JSON).
+fn read_template(path: &Path) -> Value {
+    let text = std::fs::read_to_string(path).unwrap();
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"))
+}
+
+/// The `Frames` task parameter of `template`'s step.
+fn frames_parameter(template: &Value) -> &Value {
+    &template["steps"][0]["parameterSpace"]["taskParameterDefinitions"][0]
+}
+
+/// The arguments of `template`'s task command.
+fn task_args(template: &Value) -> Vec<&str> {
+    let args = template["steps"][0]["script"]["actions"]["onRun"]["args"].as_array();
+    args.unwrap().iter().map(|a| a.as_str().unwrap()).collect()
+}
+
+/// The variables of `template`'s step environment.
+fn variables(template: &Value) -> &Value {
+    &template["steps"][0]["stepEnvironments"][0]["variables"]
+}
+
+/// How often `words` follow each other in `args`.
+fn count(args: &[&str], words: &[&str]) -> usize {
+    args.windows(words.len()).filter(|w| *w == words).count()
+}
+
 /// The parameter values of the OpenJD job `template`.
 fn values(template: &Path) -> std::path::PathBuf {
     let stem = template.file_stem().unwrap().to_string_lossy();
@@ -88,9 +116,10 @@ fn an_openjd_template_checks_runs_and_matches_a_local_run_byte_for_byte() {
         .output()
         .unwrap();
     assert!(make.status.success(), "{}", stderr(&make));
-    let template = std::fs::read_to_string(d.join("job.yaml")).unwrap();
-    assert!(
-        template.contains(r#"range: ["1-3", "4-6", "7"]"#),
+    let template = read_template(&d.join("job.yaml"));
+    assert_eq!(
+        frames_parameter(&template)["range"],
+        json!(["1-3", "4-6", "7"]),
         "{template}"
     );
     openjd(&openjd_cli, &["check", "job.yaml"], d);
@@ -681,7 +710,7 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         &["--frames", "1-7", "--chunk", "3", "-o", "jobs/a/job.yaml"],
         &over,
     );
-    let template = std::fs::read_to_string(d.join("jobs/a/job.yaml")).unwrap();
+    let template = read_template(&d.join("jobs/a/job.yaml"));
     let given = std::fs::read_to_string(values(&d.join("jobs/a/job.yaml"))).unwrap();
     let output = d.join("jobs/out/c.####.exr");
     assert!(
@@ -689,12 +718,9 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         "{given}"
     );
     // In the task's arguments (the description quotes the command as given).
-    let args = template.split("args: [").nth(1).unwrap();
-    assert_eq!(args.matches("--resume").count(), 1, "{template}");
-    assert_eq!(
-        args.matches("\"-q\"").count() + args.matches("--quiet").count(),
-        1
-    );
+    let args = task_args(&template);
+    assert_eq!(count(&args, &["--resume"]), 1, "{template}");
+    assert_eq!(count(&args, &["-q"]) + count(&args, &["--quiet"]), 1);
     openjd(&openjd_cli, &["check", "jobs/a/job.yaml"], d);
     openjd(
         &openjd_cli,
@@ -715,9 +741,10 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         &["--frames", "1-7x2", "--chunk", "2", "-o", "b.yaml"],
         &["over", "fg.####.exr", "bg.####.exr", "-o", "b/c.####.exr"],
     );
-    let template = std::fs::read_to_string(d.join("b.yaml")).unwrap();
-    assert!(
-        template.contains(r#"range: ["1-3:2", "5-7:2"]"#),
+    let template = read_template(&d.join("b.yaml"));
+    assert_eq!(
+        frames_parameter(&template)["range"],
+        json!(["1-3:2", "5-7:2"]),
         "{template}"
     );
     openjd(&openjd_cli, &["check", "b.yaml"], d);
@@ -764,19 +791,22 @@ fn templates_take_any_spelling_and_any_number_of_frames() {
         ],
         &["premult", "f{{x}}.####.exr", "-o", "c/p.####.exr"],
     );
-    let template = std::fs::read_to_string(d.join("c.yaml")).unwrap();
-    for part in [
-        "extensions: [TASK_CHUNKING]",
-        "type: CHUNK[INT]",
-        r#"range: "{{Param.Frames}}""#,
-        r#"default: "1-2000""#,
-        r#"defaultTaskCount: "{{Param.ChunkSize}}""#,
-        "rangeConstraint: CONTIGUOUS",
-        "targetRuntimeSeconds: 60",
-        "{{Param.Input1}}",
-    ] {
-        assert!(template.contains(part), "{part} not in {template}");
-    }
+    let template = read_template(&d.join("c.yaml"));
+    let frames = frames_parameter(&template);
+    let parameters = template["parameterDefinitions"].as_array().unwrap();
+    assert_eq!(template["extensions"], json!(["TASK_CHUNKING"]));
+    assert_eq!(frames["type"], "CHUNK[INT]", "{template}");
+    assert_eq!(frames["range"], "{{Param.Frames}}", "{template}");
+    assert!(
+        parameters.iter().any(|p| p["default"] == "1-2000"),
+        "{template}"
+    );
+    assert_eq!(
+        frames["chunks"],
+        json!({"defaultTaskCount": "{{Param.ChunkSize}}", "rangeConstraint": "CONTIGUOUS", "targetRuntimeSeconds": 60}),
+        "{template}"
+    );
+    assert!(task_args(&template).contains(&"{{Param.Input1}}"));
     let given = std::fs::read_to_string(values(&d.join("c.yaml"))).unwrap();
     assert!(given.contains("f{{x}}.####.exr"), "{given}");
     openjd(&openjd_cli, &["check", "c.yaml"], d);
@@ -815,26 +845,31 @@ fn farm_in(
 }
 
 /// The `min` of the OpenJD amount `name` in `template`.
-fn amount(template: &str, name: &str) -> u64 {
-    let at = template
-        .find(&format!("- name: {name}\n"))
-        .unwrap_or_else(|| panic!("no {name} in {template}"));
-    let rest = &template[at..];
-    let min = rest.find("min: ").unwrap() + 5;
-    rest[min..].lines().next().unwrap().trim().parse().unwrap()
+fn amount(template: &Value, name: &str) -> u64 {
+    let amounts = template["steps"][0]["hostRequirements"]["amounts"].as_array();
+    let amount = amounts.unwrap().iter().find(|a| a["name"] == name);
+    let amount = amount.unwrap_or_else(|| panic!("no {name} in {template}"));
+    amount["min"].as_u64().unwrap()
 }
 
 /// The memory bound of specs/architecture.md worked by hand, in MiB, for
-/// one frame of `over` of the generated fg (half RGBA, float Z and vectors:
-/// 20 bytes a pixel) and bg (12 bytes, as the result), W wide, strips of S
-/// rows, ZIP blocks of 16 lines: both inputs and the merge alive at once,
-/// none with a halo; the writer's two batches waiting, each also laid out.
+/// one frame of `over` on one thread of the generated fg (half RGBA, float
+/// Z and vectors: 20 bytes a pixel) and bg (12 bytes, as the result), W
+/// wide, strips of S rows, ZIP blocks of 16 lines: both inputs and the
+/// merge alive at once, none with a halo; ZIP inputs inflate into the
+/// thread's buffers (c_i = 1) and the ZIP output transforms there (c_o =
+/// 0); the writer's two batches waiting, each also laid out; the thread's
+/// codec buffers: the largest block (fg's), a read block with its 64 bytes
+/// of padding, an output block deflated (1/512 over) and the compressors at
+/// the default level (660 KiB libdeflate, 300 KiB igzip).
 fn over_bound_by_hand(w: u64, s: u64) -> u64 {
     let (l, fg, bg) = (16, 20, 12);
-    let decode = w * (fg + bg) * (3 * (s + 2 * l) + 2 * s);
+    let decode = w * (fg + bg) * (2 * (s + 2 * l) + 2 * s);
     let windows = w * s * (fg + bg + bg);
-    let encode = (5 + 2 * 2) * s * w * bg;
-    (decode + windows + encode + (10 << 20)).div_ceil(1 << 20)
+    let encode = (4 + 2 * 2) * s * w * bg;
+    let (read, written) = (w * l * fg, w * l * bg);
+    let codec = read + (read + 64) + (written + written / 512) + (660 << 10) + (300 << 10);
+    (decode + windows + encode + codec + (10 << 20)).div_ceil(1 << 20)
 }
 
 /// OpenJD's host requirements: the task's threads as vcpus and the
@@ -871,25 +906,28 @@ fn openjd_jobs_ask_for_their_threads_and_memory_and_carry_the_settings() {
         &over,
     );
     assert!(out.status.success(), "{}", stderr(&out));
-    let template = std::fs::read_to_string(d.join("job.yaml")).unwrap();
+    let template = read_template(&d.join("job.yaml"));
     assert_eq!(amount(&template, "amount.worker.vcpu"), 1, "{template}");
     let memory = amount(&template, "amount.worker.memory");
     // On one thread a block is 1024 x 16 x 12 = 196,608 bytes: a strip is
     // ceil(2 MiB / block) = 11 blocks, 176 rows.
     assert_eq!(memory, over_bound_by_hand(1024, 176), "{template}");
     assert_eq!(
-        template.matches("\"--threads\", \"1\"").count(),
+        count(&task_args(&template), &["--threads", "1"]),
         1,
         "{template}"
     );
+    let setting = variables(&template)["EXRCOMP_TEST_SETTING"].as_str();
+    let parameters = template["parameterDefinitions"].as_array().unwrap();
     assert!(
-        template.contains("EXRCOMP_TEST_SETTING: \"{{Param.Env")
-            && template.contains("default: \"a{{b}}\""),
+        setting.unwrap().starts_with("{{Param.Env")
+            && parameters.iter().any(|p| p["default"] == "a{{b}}"),
         "{template}"
     );
+    let description = template["description"].as_str().unwrap();
     assert!(
-        template.contains("\ndescription: \"exrcomp over fg.####.exr")
-            && template.contains(&format!("at most {memory} MiB")),
+        description.starts_with("exrcomp over fg.####.exr")
+            && description.contains(&format!("at most {memory} MiB")),
         "{template}"
     );
     // A run of the command on those threads holds less than the bound.
@@ -914,10 +952,9 @@ fn openjd_jobs_ask_for_their_threads_and_memory_and_carry_the_settings() {
         &[&over[..], &["--threads", "2"]].concat(),
     );
     assert!(out.status.success(), "{}", stderr(&out));
-    let two = std::fs::read_to_string(d.join("two.yaml")).unwrap();
+    let two = read_template(&d.join("two.yaml"));
     assert_eq!(amount(&two, "amount.worker.vcpu"), 2, "{two}");
-    let args = two.split("args: [").nth(1).unwrap();
-    assert_eq!(args.matches("--threads").count(), 1, "{two}");
+    assert_eq!(count(&task_args(&two), &["--threads"]), 1, "{two}");
     let Some(openjd_cli) = peer("openjd") else {
         return;
     };
@@ -1409,9 +1446,10 @@ fn a_worker_with_another_ocio_writes_the_submitters_pixels() {
         .output()
         .unwrap();
     assert!(made.status.success(), "{}", stderr(&made));
-    let template = std::fs::read_to_string(d.join("job.yaml")).unwrap();
-    assert!(
-        template.contains("OCIO: \"ocio://cg-config-latest\""),
+    let template = read_template(&d.join("job.yaml"));
+    assert_eq!(
+        variables(&template)["OCIO"],
+        "ocio://cg-config-latest",
         "{template}"
     );
     let local = exrcomp()
@@ -1469,7 +1507,7 @@ fn farm_threads_are_a_workers_not_the_submitters() {
         &over,
     );
     assert!(made.status.success(), "{}", stderr(&made));
-    let template = std::fs::read_to_string(d.join("j.yaml")).unwrap();
+    let template = read_template(&d.join("j.yaml"));
     assert_eq!(amount(&template, "amount.worker.vcpu"), 256, "{template}");
     let cores = std::thread::available_parallelism().unwrap().get();
     if cores * 8 < 256 {
@@ -1607,15 +1645,20 @@ fn tasks_print_a_line_per_frame_and_their_farms_progress() {
         &["over", "fg.####.exr", "bg.####.exr", "-o", "oj/c.####.exr"],
     );
     assert!(made.status.success(), "{}", stderr(&made));
-    let template = std::fs::read_to_string(d.join("j.yaml")).unwrap();
-    for part in [
-        "name: \"shot 10 comp\"\n",
-        "\"--progress\", \"openjd\"",
-        "    attributes:\n    - name: attr.worker.os.family\n      anyOf: [linux]\n",
-        "cancelation:\n          mode: NOTIFY_THEN_TERMINATE\n          notifyPeriodInSeconds: 120\n",
-    ] {
-        assert!(template.contains(part), "{part} not in\n{template}");
-    }
+    let template = read_template(&d.join("j.yaml"));
+    let step = &template["steps"][0];
+    assert_eq!(template["name"], "shot 10 comp", "{template}");
+    assert_eq!(count(&task_args(&template), &["--progress", "openjd"]), 1);
+    assert_eq!(
+        step["hostRequirements"]["attributes"],
+        json!([{"name": "attr.worker.os.family", "anyOf": ["linux"]}]),
+        "{template}"
+    );
+    assert_eq!(
+        step["script"]["actions"]["onRun"]["cancelation"],
+        json!({"mode": "NOTIFY_THEN_TERMINATE", "notifyPeriodInSeconds": 120}),
+        "{template}"
+    );
     let Some(openjd_cli) = peer("openjd") else {
         return;
     };
@@ -1631,8 +1674,8 @@ fn tasks_print_a_line_per_frame_and_their_farms_progress() {
 }
 
 /// `farm openjd --bundle DIR`: a job bundle as `deadline bundle submit`
-/// reads it, `template.yaml` (which `openjd check` accepts) and
-/// `parameter_values.yaml` (`parameterValues`, a name and a value each);
+/// reads it, `template.json` (which `openjd check` accepts) and
+/// `parameter_values.json` (`parameterValues`, a name and a value each);
 /// run with those values it writes the frames.
 #[test]
 fn openjd_bundles_hold_a_template_and_its_parameter_values() {
@@ -1646,38 +1689,38 @@ fn openjd_bundles_hold_a_template_and_its_parameter_values() {
         &["over", "fg.####.exr", "bg.####.exr", "-o", "b/c.####.exr"],
     );
     assert!(made.status.success(), "{}", stderr(&made));
-    let template = std::fs::read_to_string(d.join("bundle/template.yaml")).unwrap();
-    let values = std::fs::read_to_string(d.join("bundle/parameter_values.yaml")).unwrap();
-    assert!(values.starts_with("parameterValues:\n- name: "), "{values}");
+    let template = read_template(&d.join("bundle/template.json"));
+    let text = std::fs::read_to_string(d.join("bundle/parameter_values.json")).unwrap();
+    let values: Value = serde_json::from_str(&text).unwrap();
+    let values = values["parameterValues"].as_array().unwrap();
+    let parameters = template["parameterDefinitions"].as_array().unwrap();
     for name in ["Exrcomp", "Input1", "Input2", "Output"] {
+        let value = values.iter().find(|v| v["name"] == name);
         assert!(
-            values.contains(&format!("- name: \"{name}\"\n  value: \"/")),
-            "{values}"
+            value.is_some_and(|v| v["value"].as_str().unwrap().starts_with('/')),
+            "{text}"
         );
-        assert!(
-            template.contains(&format!("- name: {name}\n")),
-            "{template}"
-        );
+        assert!(parameters.iter().any(|p| p["name"] == name), "{template}");
     }
     let Some(openjd_cli) = peer("openjd") else {
         return;
     };
-    openjd(&openjd_cli, &["check", "bundle/template.yaml"], d);
+    openjd(&openjd_cli, &["check", "bundle/template.json"], d);
     // The bundle's values as `openjd run` takes them ({NAME: VALUE}), read
-    // by a YAML parser, not by hand.
+    // by Python's parser, not by hand.
     let python = openjd_cli.with_file_name("python3");
-    let script = "import sys, json, yaml\n\
-        values = yaml.safe_load(open(sys.argv[1]))['parameterValues']\n\
+    let script = "import sys, json\n\
+        values = json.load(open(sys.argv[1]))['parameterValues']\n\
         print(json.dumps({v['name']: v['value'] for v in values}))\n";
     let read = Command::new(python)
-        .args(["-c", script, "bundle/parameter_values.yaml"])
+        .args(["-c", script, "bundle/parameter_values.json"])
         .current_dir(d)
         .output()
         .unwrap();
     assert!(read.status.success(), "{}", stderr(&read));
     std::fs::write(d.join("values.json"), &read.stdout).unwrap();
     let run = Command::new(&openjd_cli)
-        .args(["run", "bundle/template.yaml", "--step", "exrcomp", "-p"])
+        .args(["run", "bundle/template.json", "--step", "exrcomp", "-p"])
         .arg(format!("file://{}", s(&d.join("values.json"))))
         .current_dir(d)
         .output()

@@ -9,6 +9,7 @@ mod bench_report;
 mod blur;
 #[cfg(feature = "colour")]
 mod colour;
+mod colour_metadata;
 mod common;
 mod crop;
 mod damaged_corpus;
@@ -17,6 +18,7 @@ mod depth_and_motion;
 mod diffrender_and_zmerge;
 mod farm;
 mod first_run;
+mod foreign_inputs;
 mod grades;
 mod hostile;
 mod job_files;

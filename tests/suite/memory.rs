@@ -362,8 +362,45 @@ fn deep_tiled_peak_memory_does_not_grow_with_height() {
 /// peak (the farm asks that much of a worker).
 fn assert_bound_near_peak(command: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    generate_sequence(d, "p", "bg", 2048, 1024, "1");
+    generate_sequence(dir.path(), "p", "bg", 2048, 1024, "1");
+    assert_bound_near_peak_in(dir.path(), command);
+}
+
+/// `d/p.0001.exr`: `width` x `height` of noise that ZIP does not shrink,
+/// the channels of a `fg` plate (half RGBA, premultiplied; float Z and
+/// motion vectors): the worst case of the bound's compressed terms.
+fn write_noise(d: &Path, width: usize, height: usize) {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let n = width * height;
+    let alpha: Vec<f32> = (0..n).map(|_| next()).collect();
+    let half = |v: Vec<f32>| Samples::F16(v.into_iter().map(half::f16::from_f32).collect());
+    let mut channels = std::collections::BTreeMap::new();
+    for name in ["R", "G", "B"] {
+        channels.insert(
+            name.into(),
+            half(alpha.iter().map(|a| a * next()).collect()),
+        );
+    }
+    for (name, scale, offset) in [
+        ("Z", 99.0, 1.0),
+        ("forward.u", 8.0, -4.0),
+        ("forward.v", 8.0, -4.0),
+    ] {
+        let values = (0..n).map(|_| offset + scale * next()).collect();
+        channels.insert(name.into(), Samples::F32(values));
+    }
+    channels.insert("A".into(), half(alpha));
+    write_flat(&d.join("p.0001.exr"), (width, height), channels);
+}
+
+/// `assert_bound_near_peak` on the plate `d/p.0001.exr`.
+fn assert_bound_near_peak_in(d: &Path, command: &[&str]) {
     let command = [command, &["--threads", "8"]].concat();
     let bound = bound(d, &command, &["p.####.exr"], "1");
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
@@ -401,4 +438,23 @@ fn a_defocus_bound_holds_its_scratch_on_every_thread() {
 #[test]
 fn a_turns_bound_counts_its_span_once() {
     assert_bound_near_peak(&["transform", "--rotate", "30"]);
+}
+
+/// Each pool thread keeps the ZIP buffers of the largest block it inflated
+/// or deflated, its compressors and a block's deflate data, all run long
+/// (`codec_per_thread`): a strip of fewer blocks than threads (wide
+/// plates: 64 rows at 4096) still leaves them on every thread. Counted
+/// per strip, a blur and an enlarging resize of a 4096x1024 noise plate
+/// peaked over their bound (at 3840x2160: 110 MiB for a bound of 99, and
+/// 147 for 122).
+#[test]
+fn zip_buffers_are_counted_on_every_thread() {
+    let dir = tempfile::tempdir().unwrap();
+    write_noise(dir.path(), 4096, 1024);
+    for command in [
+        &["blur", "--radius", "10"][..],
+        &["resize", "--scale", "1.5"],
+    ] {
+        assert_bound_near_peak_in(dir.path(), command);
+    }
 }

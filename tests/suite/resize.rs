@@ -4,6 +4,7 @@
 //! and memory flat in height for a 16K-wide plate resized to 4K.
 
 use crate::common::*;
+use exr::meta::attribute::IntegerBounds;
 use std::path::Path;
 
 /// The 1-D filters of specs/ops.md at their default widths, at `x` pixels
@@ -606,14 +607,85 @@ fn reformat_fit_centred_equals_oiiotool_fit() {
         assert_eq!(windows(&ours), windows(&theirs), "{format}");
         let (got, mut expected) = (read_image(&ours), read_image(&theirs));
         // oiiotool 2.4 may round a shrunk data window a row taller.
-        expected.height = expected.height.min(got.height);
-        let n = expected.width * expected.height;
-        for plane in expected.channels.values_mut() {
-            let mut cut = plane.zeros_like(n);
-            (0..n).for_each(|i| cut.copy_from(i, plane, i));
-            *plane = cut;
-        }
+        cut_rows(&mut expected, got.height);
         assert_close(&got, &expected, format);
+    }
+}
+
+/// `reformat --fit fit --center` is oiiotool 2.4's `--resize` to the fitted
+/// size (its `--fit`'s rounding), placed at its `--fit`'s window: shrinking
+/// and enlarging, along either axis. oiiotool's `--fit` itself stretches the
+/// filter by the format's ratio where that is above 1 (specs/ops.md,
+/// "reformat"): in the first case it is 0.26 off its own `--resize`.
+#[test]
+fn reformat_fit_is_oiiotools_resize_to_the_fitted_size_placed() {
+    let Some(oiiotool) = peer("oiiotool") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (input, ours, fit, resized) = (
+        d.join("in.exr"),
+        d.join("ours.exr"),
+        d.join("fit.exr"),
+        d.join("resized.exr"),
+    );
+    for ((w, h), format, size) in [
+        ((160, 96), "77x301", "77x46"),
+        ((64, 40), "200x90", "144x90"),
+        ((90, 50), "45x60", "45x25"),
+        ((50, 90), "120x100", "56x100"),
+    ] {
+        let mut img = random_rgba(7, 0, 0, w, h, Kind::Half, false);
+        img.display = (w, h);
+        write_image(
+            &input,
+            &img,
+            compression("zip"),
+            exr::meta::attribute::LineOrder::Increasing,
+        );
+        let ran = run(&[
+            "reformat",
+            s(&input),
+            "-o",
+            s(&ours),
+            "--format",
+            format,
+            "--fit",
+            "fit",
+            "--center",
+            "--filter",
+            "mitchell",
+            "--quiet",
+        ]);
+        assert!(ran.status.success(), "{}", stderr(&ran));
+        for (op, arg, out) in [("--fit", format, &fit), ("--resize", size, &resized)] {
+            succeed(
+                std::process::Command::new(&oiiotool)
+                    .arg(&input)
+                    .arg(format!("{op}:filter=mitchell"))
+                    .args([arg, "-o"])
+                    .arg(out),
+            );
+        }
+        assert_eq!(windows(&ours), windows(&fit), "{format}");
+        let (mut got, mut expected) = (read_image(&ours), read_image(&resized));
+        (got.x, got.y) = (expected.x, expected.y);
+        // oiiotool's `--resize` may round its data window a row taller
+        // (specs/ops.md, "resize": 56x100 gave 101 rows); its `--fit` not.
+        cut_rows(&mut expected, got.height);
+        assert_close(&got, &expected, format);
+    }
+}
+
+/// `img` cut to its first `height` rows at most.
+fn cut_rows(img: &mut Img, height: usize) {
+    img.height = img.height.min(height);
+    let n = img.width * img.height;
+    for plane in img.channels.values_mut() {
+        let mut cut = plane.zeros_like(n);
+        (0..n).for_each(|i| cut.copy_from(i, plane, i));
+        *plane = cut;
     }
 }
 
@@ -747,8 +819,8 @@ fn a_resize_under_wider_columns_is_the_resized_files() {
 }
 
 /// Every `.exr` of the shared sets (not Damaged), sorted, then the files of
-/// every single-part class the peers make (`real_files::made_images`:
-/// tiled, mipmapped, ripmapped, luminance/chroma B44) in `made`.
+/// every class the peers make (`real_files::made_images`: tiled, mipmapped,
+/// ripmapped, luminance/chroma B44, multi-part) in `made`.
 fn public_exrs(made: &Path) -> Vec<std::path::PathBuf> {
     let mut stack: Vec<_> = shared_images()
         .into_iter()
@@ -767,13 +839,15 @@ fn public_exrs(made: &Path) -> Vec<std::path::PathBuf> {
     }
     found.sort();
     let made = crate::real_files::made_images(made).unwrap_or_default();
-    // (Not the multi-part ones: a resized part of them cannot keep the
-    // file's one display window, and the sweep of real_files.rs reads them.)
-    let single = made
-        .into_iter()
-        .filter(|(name, _)| !name.starts_with("parts-"));
-    found.extend(single.map(|(_, path)| path));
+    found.extend(made.into_iter().map(|(_, path)| path));
     found
+}
+
+/// How many parts `input` has (as `info --json` says).
+fn part_count(input: &Path) -> usize {
+    let out = run(&["info", s(input), "--json"]);
+    let info: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap_or_default();
+    info["parts"].as_array().map_or(1, |p| p.len())
 }
 
 /// `theirs` with `ours`'s samples in the ring `width` pixels wide at the
@@ -829,60 +903,131 @@ fn half_size_equals_oiiotool_on_every_public_image() {
     let mut failures = Vec::new();
     let mut checked = 0;
     let rgb = dir.path().join("rgb.exr");
+    let (mut parts, mut multi) = (0, 0);
     for input in public_exrs(dir.path()) {
+        let count = part_count(&input);
+        if count > 1 {
+            // oiiotool resizes one subimage (`--subimage N`); ours resizes
+            // every part (`--all-parts`: one display window for all),
+            // whose part N oiiotool copies out to compare.
+            let all = dir.path().join("all.exr");
+            resize(&input, &all, &["--scale", "0.5", "--all-parts"]);
+            multi += 1;
+            for n in 0..count {
+                if !half_size(&oiiotool, &input, Some(n), &theirs) {
+                    continue; // a deep part: oiiotool resizes none
+                }
+                let name = format!("{} part {n}", input.display());
+                let copied = oiiotool_part(&oiiotool, &all, Some(n), &[], &ours);
+                assert!(copied, "{name}: oiiotool did not copy our part");
+                let windows = part_windows(&input, n);
+                failures.extend(half_size_differs(&ours, &theirs, windows, &name));
+                parts += 1;
+            }
+            continue;
+        }
         // oiiotool reads no subsampled channels: its reference is then the
         // half size of our RGB of them (tests/suite/luminance_chroma.rs
         // checks that against RgbaInputFile's maths).
-        let source = if half_size(&oiiotool, &input, &theirs) {
+        let source = if half_size(&oiiotool, &input, None, &theirs) {
             input.clone()
-        } else if subsampled(&input) && rgb_of(&input, &rgb) && half_size(&oiiotool, &rgb, &theirs)
+        } else if subsampled(&input)
+            && rgb_of(&input, &rgb)
+            && half_size(&oiiotool, &rgb, None, &theirs)
         {
             rgb.clone()
         } else {
             continue;
         };
         resize(&input, &ours, &["--scale", "0.5", "--compression", "zip"]);
-        let (got, expected) = (read_image(&ours), read_image(&theirs));
         let name = input.display().to_string();
-        let window = |i: &Img| (i.x, i.y, i.width, i.height);
-        if window(&got) != window(&expected) {
-            failures.push(format!(
-                "{name}: window {:?}, oiiotool's {:?}",
-                window(&got),
-                window(&expected)
-            ));
-            continue;
-        }
-        let mut expected = as_ours(&got, expected);
-        // Where the data window reaches past the display window, OpenImageIO
-        // moves a tap outside the data window into the display window on
-        // both axes at once (its 2-D wrap), which our separable passes do
-        // only along the pass's axis: the 4-pixel ring at the window's edge
-        // is left out there (specs/ops.md, "resize", Edges).
-        let (data, display) = windows(&source);
-        let past = data.position.x() < display.position.x()
-            || data.position.y() < display.position.y()
-            || data.end().x() > display.end().x()
-            || data.end().y() > display.end().y();
-        if past {
-            edge_ring_as(&got, &mut expected, 4);
-        }
-        let (outside, worst) = compare(&got, &expected, &name);
-        if outside > 0 {
-            failures.push(format!(
-                "{name}: {outside} samples off, the worst by {worst}"
-            ));
-        }
+        let windows = part_windows(&source, 0);
+        failures.extend(half_size_differs(&ours, &theirs, windows, &name));
         checked += 1;
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-    eprintln!("{checked} public images resized as oiiotool does");
+    assert!(
+        multi == 0 || parts >= 2 * multi,
+        "{parts} parts of {multi} multi-part files"
+    );
+    eprintln!(
+        "{checked} public images and {parts} parts of {multi} multi-part files resized as oiiotool does"
+    );
+}
+
+/// Part `n` of `path`'s data and display windows.
+/// (As `info --json` says: the exr crate reads no deep part's header.)
+fn part_windows(path: &Path, n: usize) -> (IntegerBounds, IntegerBounds) {
+    let out = run(&["info", s(path), "--json"]);
+    let info: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let window = |name: &str| {
+        let value = &info["parts"][n]["attributes"][name]["value"];
+        let at = |corner: &str, k: usize| value[corner][k].as_i64().unwrap() as i32;
+        let (x0, y0) = (at("min", 0), at("min", 1));
+        let size = |k: usize, from: i32| (at("max", k) - from + 1) as usize;
+        IntegerBounds::new((x0, y0), (size(0, x0), size(1, y0)))
+    };
+    (window("dataWindow"), window("displayWindow"))
+}
+
+/// How `ours` differs from oiiotool's half size `theirs` of a part whose
+/// data and display windows are `source` (windows, then samples), if it
+/// does.
+fn half_size_differs(
+    ours: &Path,
+    theirs: &Path,
+    source: (IntegerBounds, IntegerBounds),
+    name: &str,
+) -> Option<String> {
+    let (got, expected) = (read_image(ours), read_image(theirs));
+    let window = |i: &Img| (i.x, i.y, i.width, i.height);
+    if window(&got) != window(&expected) {
+        return Some(format!(
+            "{name}: window {:?}, oiiotool's {:?}",
+            window(&got),
+            window(&expected)
+        ));
+    }
+    let mut expected = as_ours(&got, expected);
+    // Where the data window reaches past the display window, OpenImageIO
+    // moves a tap outside the data window into the display window on both
+    // axes at once (its 2-D wrap), which our separable passes do only along
+    // the pass's axis: the 4-pixel ring at the window's edge is left out
+    // there (specs/ops.md, "resize", Edges).
+    let (data, display) = source;
+    let past = data.position.x() < display.position.x()
+        || data.position.y() < display.position.y()
+        || data.end().x() > display.end().x()
+        || data.end().y() > display.end().y();
+    if past {
+        edge_ring_as(&got, &mut expected, 4);
+    }
+    let (outside, worst) = compare(&got, &expected, name);
+    (outside > 0).then(|| format!("{name}: {outside} samples off, the worst by {worst}"))
 }
 
 /// Whether oiiotool made `output`, `input` at half size (ZIP).
-fn half_size(oiiotool: &Path, input: &Path, output: &Path) -> bool {
-    std::process::Command::new(oiiotool)
-        .args([s(input), "--resize", "50%", "--compression", "zip", "-o"])
+fn half_size(oiiotool: &Path, input: &Path, part: Option<usize>, output: &Path) -> bool {
+    oiiotool_part(oiiotool, input, part, &["--resize", "50%"], output)
+}
+
+/// Whether oiiotool wrote `output` (ZIP): `input`, its subimage `part` if
+/// given, after `ops`.
+fn oiiotool_part(
+    oiiotool: &Path,
+    input: &Path,
+    part: Option<usize>,
+    ops: &[&str],
+    output: &Path,
+) -> bool {
+    let mut command = std::process::Command::new(oiiotool);
+    command.arg(input);
+    if let Some(n) = part {
+        command.args(["--subimage", &n.to_string()]);
+    }
+    command
+        .args(ops)
+        .args(["--compression", "zip", "-o"])
         .arg(output)
         .output()
         .unwrap()

@@ -51,7 +51,8 @@ pub const CDL: Operation = Operation {
             Some(name) => read(transform, name)?,
             None => super::processor(&ocio::Config::create_raw(), transform)?,
         };
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let map = super::Ocio::new(&processor);
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };

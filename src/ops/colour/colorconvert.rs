@@ -17,22 +17,36 @@ pub const COLORCONVERT: Operation = Operation {
         let p = ColorconvertParams::read(args)?;
         let config = super::config(p.config.as_ref())?;
         let transform = super::conversion(&config, &p.from, &p.to)?;
-        let processor = super::processor(&config, transform)?;
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let processor = super::processor_in(&config, &p.context, transform)?;
+        // A named transform's destination is no colour space of the config.
+        let to = config
+            .get_color_space(&p.to)
+            .map(|cs| cs.name().to_string());
+        let edits = match to {
+            Some(to) => super::metadata::destination(&config, &to),
+            None => super::metadata::written(None),
+        };
+        let map = super::Ocio::new(&processor).writing(edits);
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
-    measure: None,
+    measure: Some(super::measure),
 };
 
 params! {
     pub struct ColorconvertParams {
         /// The input's colour space (a name, alias or role of the config),
-        /// or a named transform of the config (its forward transform).
+        /// or a named transform of the config (its forward transform);
+        /// `auto`: read from the input's colorInteropID, chromaticities, or
+        /// the config's file rules.
         from: String,
         /// The output's colour space, or a named transform (its inverse).
         to: String,
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }

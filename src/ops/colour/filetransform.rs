@@ -19,14 +19,10 @@ pub const FILETRANSFORM: Operation = Operation {
         let warnings = interpolation_unused(&processor, p.interpolation.0, &p.file)
             .into_iter()
             .collect();
-        Ok(super::add_warned(
-            processor,
-            warnings,
-            p.no_unpremult,
-            args,
-            graph,
-            inputs,
-        ))
+        // A file says nothing of the space it ends in.
+        let map =
+            (super::Ocio::new(&processor).warned(warnings)).writing(super::metadata::written(None));
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };

@@ -6,39 +6,60 @@
 //! (`--config`, `$OCIO`, the built-in one), names checked against it, and
 //! the processor as a colour map. Semantics: specs/ops.md, "Colour (OpenColorIO)".
 
+pub mod auto;
 pub mod cdl;
 pub mod colorconvert;
 pub mod filetransform;
+pub mod metadata;
 pub mod ociodisplay;
 pub mod ociolook;
 
-use super::declare::{Args, FileName};
+use super::declare::{Args, FileName, Measured, Value, REPEATED};
 use super::grade::{Colour, ColourMap};
 use crate::engine::graph::{GraphBuilder, NodeId};
+use crate::engine::plan::Job;
+use crate::io::attributes::Edit;
 use crate::io::parts::unknown;
 use ocio::config::NamedTransform;
 use ocio::{
-    ColorSpaceTransform, Config, CpuProcessor, GroupTransform, Processor, Transform,
+    ColorSpaceTransform, Config, Context, CpuProcessor, GroupTransform, Processor, Transform,
     TransformDirection, ViewType,
 };
 
-/// The config without `--config` or `$OCIO`: OCIO's ACES CG config as the
-/// crate embeds it (v4.0.0, ACES 2.0; PyPI's 2.6 names v5.0.0 so).
-pub const BUILTIN: &str = "ocio://cg-config-latest";
+pub use super::BUILTIN_COLOUR_CONFIG as BUILTIN;
 
 /// The config: `--config FILE|ocio://NAME`, else `$OCIO` when set and not
 /// empty, else the built-in one (not the crate's `create_from_env`, which
 /// gives a raw config without `$OCIO`).
 pub fn config(given: Option<&FileName>) -> Result<Config, String> {
-    let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
-    let (source, from) = match (given, env) {
-        (Some(file), _) => (file.0.clone(), "--config"),
-        (None, Some(file)) => (file, "$OCIO"),
-        (None, None) => (BUILTIN.to_string(), "the built-in default"),
-    };
+    let (source, from) = source(given);
     Config::create_from_file(&source).map_err(|e| {
         format!("cannot load the OCIO config '{source}' ({from}): {e}; give --config FILE or ocio://NAME")
     })
+}
+
+/// Where the config comes from, and what named it.
+fn source(given: Option<&FileName>) -> (String, &'static str) {
+    let env = std::env::var("OCIO").ok().filter(|v| !v.is_empty());
+    match (given, env) {
+        (Some(file), _) => (file.0.clone(), "--config"),
+        (None, Some(file)) => (file, "$OCIO"),
+        (None, None) => (BUILTIN.to_string(), "the built-in default"),
+    }
+}
+
+/// The colour operations' measure: `--from auto` read from the first frame
+/// of the input (`auto.rs`); nothing for the others.
+pub fn measure(args: &Args, job: &Job, _dry_run: bool) -> crate::error::Result<Measured> {
+    let Some(from) = args.values.get("from") else {
+        return Ok(Measured::default());
+    };
+    if from != auto::AUTO {
+        return Ok(Measured::default());
+    }
+    let given = args.values.get("config").map(|c| FileName(c.clone()));
+    let config = config(given.as_ref()).map_err(crate::error::Error::usage)?;
+    auto::measure(&config, &source(given.as_ref()).0, job)
 }
 
 /// A colour space, role or alias as the config spells its canonical name;
@@ -46,6 +67,14 @@ pub fn config(given: Option<&FileName>) -> Result<Config, String> {
 pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
     if let Some(space) = config.get_color_space(name) {
         return Ok(space.name().to_string());
+    }
+    if name == auto::AUTO {
+        return Err(
+            "'auto' is no colour space: --from auto is the command line's (it reads \
+             the first frame of the command's input, which a job node's input may not \
+             be); name the colour space"
+                .into(),
+        );
     }
     let spaces: Vec<String> = (0..config.num_color_spaces())
         .map(|i| config.color_space_name_by_index(i).to_string())
@@ -173,24 +202,103 @@ pub fn direction(inverse: bool) -> TransformDirection {
 
 /// A transform's processor in a config (a raw one for files and CDLs).
 pub fn processor(config: &Config, transform: Transform) -> Result<Processor, String> {
+    processor_in(config, &Vars::default(), transform)
+}
+
+/// `processor`, with the config's context variables `vars` set over its
+/// own (`--context`).
+pub fn processor_in(
+    config: &Config,
+    vars: &Vars,
+    transform: Transform,
+) -> Result<Processor, String> {
+    let context = vars.context(config);
     let processor = config
-        .get_processor_for_transform(&transform, TransformDirection::Forward)
+        .get_processor_with_context(&context, &transform, TransformDirection::Forward)
         .map_err(|e| e.to_string())?;
     cdl::invertible(&processor)?;
     Ok(processor)
 }
 
+/// `--context KEY=VALUE`, given again for more: OCIO's context variables
+/// (`$SHOT` in a config's search path or a file transform's `src`); a job
+/// file's list of `"KEY=VALUE"` strings.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Vars(pub Vec<(String, String)>);
+
+impl Vars {
+    /// The config's current context with these variables set.
+    pub fn context(&self, config: &Config) -> Context {
+        let mut context = config.current_context().clone();
+        for (key, value) in &self.0 {
+            context.set_string_var(key, Some(value));
+        }
+        context
+    }
+}
+
+impl Value for Vars {
+    fn parse(text: &str) -> Result<Self, String> {
+        let lines = text.split(REPEATED).filter(|l| !l.is_empty());
+        let pairs = lines.map(|line| match line.split_once('=') {
+            Some((key, value)) if !key.trim().is_empty() => {
+                Ok((key.trim().to_string(), value.to_string()))
+            }
+            _ => Err(format!(
+                "'{line}': a context variable is KEY=VALUE (SHOT=sh010)"
+            )),
+        });
+        pairs.collect::<Result<_, _>>().map(Vars)
+    }
+    fn absent() -> Option<Self> {
+        Some(Vars::default())
+    }
+    const OPTIONAL: bool = true;
+    const REPEATS: bool = true;
+}
+
 /// An OCIO CPU processor as a colour map: built once per command, shared by
 /// every band of the node (the engine runs them on the pool at once), with
-/// the warnings its building owes the run.
-pub struct Ocio(CpuProcessor, String, Vec<String>);
+/// the warnings its building owes the run and the attributes it writes.
+pub struct Ocio {
+    cpu: CpuProcessor,
+    id: String,
+    warnings: Vec<String>,
+    edits: Vec<Edit>,
+}
+
+impl Ocio {
+    pub fn new(processor: &Processor) -> Self {
+        Ocio {
+            cpu: processor.default_cpu_processor(),
+            id: processor.cache_id(),
+            warnings: Vec::new(),
+            edits: Vec::new(),
+        }
+    }
+
+    /// With warnings for the run to print once.
+    pub fn warned(self, warnings: Vec<String>) -> Self {
+        Ocio { warnings, ..self }
+    }
+
+    /// Writing the destination's colour attributes (`metadata.rs`).
+    pub fn writing(self, edits: Vec<Edit>) -> Self {
+        Ocio { edits, ..self }
+    }
+}
 
 /// A processor's maths, as its cache id (a hash of its ops and their
-/// values): what a frame's fingerprint records, so that a config with the
-/// same names and other maths makes other frames.
+/// values), and the attributes written: what a frame's fingerprint
+/// records, so that a config with the same names and other maths makes
+/// other frames.
 impl std::fmt::Debug for Ocio {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Ocio({})", self.1)
+        write!(f, "Ocio({})", self.id)?;
+        match self.edits.is_empty() {
+            true => Ok(()),
+            false => write!(f, " writing {:?}", self.edits),
+        }
     }
 }
 
@@ -200,7 +308,11 @@ impl ColourMap for Ocio {
     }
 
     fn warnings(&self) -> Vec<String> {
-        self.2.clone()
+        self.warnings.clone()
+    }
+
+    fn attributes(&self) -> Vec<Edit> {
+        self.edits.clone()
     }
 
     fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
@@ -208,39 +320,22 @@ impl ColourMap for Ocio {
         // (the node's alpha, if any, passes untouched).
         let [r, g, b] = rgb;
         let mut pixels: Vec<[f32; 4]> = (0..r.len()).map(|i| [r[i], g[i], b[i], 1.0]).collect();
-        self.0.apply_pixels(&mut pixels);
+        self.cpu.apply_pixels(&mut pixels);
         for (i, [pr, pg, pb, _]) in pixels.into_iter().enumerate() {
             (r[i], g[i], b[i]) = (pr, pg, pb);
         }
     }
 }
 
-/// The node applying `processor` to the selected layers' colour, divided by
+/// The node applying `map` to the selected layers' colour, divided by
 /// alpha first and multiplied again after unless `no_unpremult`.
 pub fn add(
-    processor: Processor,
+    map: Ocio,
     no_unpremult: bool,
     args: &Args,
     graph: &mut GraphBuilder,
     inputs: &[NodeId],
 ) -> NodeId {
-    add_warned(processor, Vec::new(), no_unpremult, args, graph, inputs)
-}
-
-/// `add`, with warnings for the run to print once.
-pub fn add_warned(
-    processor: Processor,
-    warnings: Vec<String>,
-    no_unpremult: bool,
-    args: &Args,
-    graph: &mut GraphBuilder,
-    inputs: &[NodeId],
-) -> NodeId {
-    let map = Ocio(
-        processor.default_cpu_processor(),
-        processor.cache_id(),
-        warnings,
-    );
     graph.add(Colour::new(map, !no_unpremult, &args.layers), inputs)
 }
 
@@ -651,12 +746,7 @@ mod tests {
         ];
         let before = rgb.clone();
         let processor = config.get_processor("ACEScg", "ACEScct").unwrap();
-        Ocio(
-            processor.default_cpu_processor(),
-            processor.cache_id(),
-            Vec::new(),
-        )
-        .apply(&mut rgb);
+        Ocio::new(&processor).apply(&mut rgb);
         for i in 0..3 {
             let mut pixel = [before[0][i], before[1][i], before[2][i]];
             cpu.apply_rgb(&mut pixel);

@@ -28,7 +28,7 @@ pub const OCIODISPLAY: Operation = Operation {
         let mut transform = DisplayViewTransform::new(&from, &display, &view);
         transform.direction = super::direction(p.inverse);
         let processor = match &p.looks {
-            None => super::processor(&config, Transform::DisplayView(transform))?,
+            None => super::processor_in(&config, &p.context, Transform::DisplayView(transform))?,
             // OCIO's LegacyViewingPipeline has no direction.
             Some(_) if p.inverse => {
                 return Err("ociodisplay --inverse takes the view's own looks, not --looks".into())
@@ -38,17 +38,26 @@ pub const OCIODISPLAY: Operation = Operation {
                 pipeline.set_display_view_transform(Some(&transform));
                 pipeline.set_looks_override_enabled(true);
                 pipeline.set_looks_override(&super::looks(&config, looks)?);
-                pipeline.get_processor(&config).map_err(|e| e.to_string())?
+                (pipeline.get_processor_with_context(&config, &p.context.context(&config)))
+                    .map_err(|e| e.to_string())?
             }
         };
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let edits = match p.inverse {
+            true => super::metadata::destination(&config, &from),
+            false => {
+                super::metadata::destination(&config, &display_space(&config, &display, &view))
+            }
+        };
+        let map = super::Ocio::new(&processor).writing(edits);
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };
 
 params! {
     pub struct OciodisplayParams {
-        /// The input's colour space (a name, alias or role of the config).
+        /// The input's colour space (a name, alias or role of the config;
+        /// `auto`: read from the input, as colorconvert's).
         from: String = "scene_linear",
         /// The display (default: the config's default display).
         display: Option<String>,
@@ -64,7 +73,20 @@ params! {
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
+    }
+}
+
+/// The colour space a display's view ends in: the view's, or the display's
+/// own where the view says `<USE_DISPLAY_NAME>` (OCIO 2's shared views).
+fn display_space(config: &ocio::Config, display: &str, view: &str) -> String {
+    let space = config.display_view_color_space_name(display, view);
+    match space.eq_ignore_ascii_case(ocio::types::OCIO_VIEW_USE_DISPLAY_NAME) {
+        true => display.to_string(),
+        false => space.to_string(),
     }
 }

@@ -20,8 +20,11 @@ pub const OCIOLOOK: Operation = Operation {
         };
         let mut transform = LookTransform::new(&from, &to, &super::looks(&config, &p.look)?);
         transform.direction = super::direction(p.inverse);
-        let processor = super::processor(&config, Transform::Look(transform))?;
-        Ok(super::add(processor, p.no_unpremult, args, graph, inputs))
+        let processor = super::processor_in(&config, &p.context, Transform::Look(transform))?;
+        let written = if p.inverse { &from } else { &to };
+        let map =
+            super::Ocio::new(&processor).writing(super::metadata::destination(&config, written));
+        Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT
 };
@@ -30,7 +33,8 @@ params! {
     pub struct OciolookParams {
         /// The looks (a comma list, `-` before a look for its inverse).
         look: String,
-        /// The input's colour space (a name, alias or role of the config).
+        /// The input's colour space (a name, alias or role of the config;
+        /// `auto`: read from the input, as colorconvert's).
         from: String = "scene_linear",
         /// The output's colour space (default: from).
         to: Option<String>,
@@ -39,6 +43,9 @@ params! {
         /// OCIO config: a file (.ocio, .ocioz) or ocio://NAME; default $OCIO,
         /// else ocio://cg-config-latest.
         config: Option<FileName>,
+        /// An OCIO context variable, KEY=VALUE (`$SHOT` in the config's
+        /// search path or a file's name); give it again for more.
+        context: super::Vars,
         /// Transform the colour as it is, not divided by alpha first.
         no_unpremult: bool,
     }
