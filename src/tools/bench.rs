@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
 use crate::io::writer::write_whole;
-use crate::tools::bench_run::{figure, own_exe, run_once, summarise, Runner, TimedCommand};
+use crate::tools::bench_run::{figure, own_exe, run_once, summarise, Run, Runner, TimedCommand};
 use crate::tools::bench_stats::{judge, Stats, Verdict};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -38,16 +38,16 @@ fn measure(job: &TimedCommand, args: &BenchArgs, runner: &Runner) -> Result<Valu
     }
     let mut record = summarise(job, &runs);
     if let Some(floor) = &floor {
-        let ratios: Vec<f64> = runs
-            .iter()
-            .zip(&floors)
-            .map(|(r, f)| r.wall / f.wall)
-            .collect();
+        let ratios = |f: fn(&Run) -> f64| -> Value {
+            let ratios: Vec<f64> = runs.iter().zip(&floors).map(|(r, l)| f(r) / f(l)).collect();
+            Stats::of(&ratios).json(&ratios)
+        };
         record["floor"] = json!({
             "command": floor.args,
             "wall_seconds": figure(&floors, |r| r.wall),
             "cpu_seconds": figure(&floors, |r| r.cpu),
-            "ratio": Stats::of(&ratios).json(&ratios),
+            "ratio": ratios(|r| r.wall),
+            "cpu_ratio": ratios(|r| r.cpu),
         });
     }
     Ok(record)
@@ -409,39 +409,59 @@ fn print_table(record: &Value, baseline: Option<&Value>, tolerance: f64) -> Vec<
     );
     for job in record["jobs"].as_array().into_iter().flatten() {
         let name = job["name"].as_str().unwrap_or("?");
-        let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
         let before = crate::tools::bench_stats::same_job(baseline, job);
-        let judged = before.map(|b| judge(job, b, tolerance)).unwrap_or_default();
-        let mut comparison = Vec::new();
-        for j in &judged {
-            let ratio = j.now.median / j.before.median;
-            comparison.push(match j.verdict {
-                Verdict::Within => format!("{}: {ratio:.3}x", j.figure),
-                Verdict::Noise => format!("{}: {ratio:.3}x, within noise", j.figure),
-                Verdict::Regression => {
-                    regressions.push(format!(
-                        "{name}: {} {:.3} against {:.3} ({ratio:.3}x)",
-                        j.figure, j.now.median, j.before.median
-                    ));
-                    format!("{}: {ratio:.3}x REGRESSION", j.figure)
+        let Some(judged) = before.map(|b| judge(job, b, tolerance)) else {
+            print_row(job, "");
+            continue;
+        };
+        let mut comparison: Vec<String> = judged
+            .figures
+            .iter()
+            .map(|j| {
+                let ratio = j.now.median / j.before.median;
+                match j.verdict {
+                    Verdict::Within => format!("{}: {ratio:.3}x", j.figure),
+                    Verdict::Noise => format!("{}: {ratio:.3}x within noise", j.figure),
+                    Verdict::Regression => format!("{}: {ratio:.3}x beyond noise", j.figure),
                 }
+            })
+            .collect();
+        if judged.regression {
+            comparison.push("REGRESSION".into());
+            let figures = judged.figures.iter().map(|j| {
+                let ratio = j.now.median / j.before.median;
+                format!(
+                    "{} {:.3} against {:.3} ({ratio:.3}x)",
+                    j.figure, j.now.median, j.before.median
+                )
             });
+            regressions.push(format!(
+                "{name}: {}",
+                figures.collect::<Vec<_>>().join(", ")
+            ));
         }
-        let floor_ratio = job["floor"]["ratio"]["median"].as_f64();
-        eprintln!(
-            "{name:<12} {:>9.3} {:>9.3} {:>9.3} {:>8.3} {:>9.3} {:>9.2} {:>9.1} {:>7}  {}",
-            wall.median,
-            wall.min,
-            wall.max,
-            wall.mad,
-            job["cpu_seconds"]["median"].as_f64().unwrap_or(0.0),
-            job["frames_per_second"].as_f64().unwrap_or(0.0),
-            job["peak_rss_bytes"]["median"].as_f64().unwrap_or(0.0) / 1048576.0,
-            floor_ratio.map_or("-".into(), |r| format!("{r:.3}")),
-            comparison.join(", "),
-        );
+        print_row(job, &comparison.join(", "));
     }
     regressions
+}
+
+/// A job's row of the table, then how it compares with the baseline.
+fn print_row(job: &Value, comparison: &str) {
+    let name = job["name"].as_str().unwrap_or("?");
+    let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
+    let floor_ratio = job["floor"]["ratio"]["median"].as_f64();
+    eprintln!(
+        "{name:<12} {:>9.3} {:>9.3} {:>9.3} {:>8.3} {:>9.3} {:>9.2} {:>9.1} {:>7}  {}",
+        wall.median,
+        wall.min,
+        wall.max,
+        wall.mad,
+        job["cpu_seconds"]["median"].as_f64().unwrap_or(0.0),
+        job["frames_per_second"].as_f64().unwrap_or(0.0),
+        job["peak_rss_bytes"]["median"].as_f64().unwrap_or(0.0) / 1048576.0,
+        floor_ratio.map_or("-".into(), |r| format!("{r:.3}")),
+        comparison,
+    );
 }
 
 #[cfg(test)]

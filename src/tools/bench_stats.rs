@@ -10,6 +10,8 @@ pub struct Stats {
     pub min: f64,
     pub max: f64,
     pub mad: f64,
+    /// How many values.
+    pub runs: usize,
 }
 
 fn median(sorted: &[f64]) -> f64 {
@@ -33,6 +35,7 @@ impl Stats {
             min: sorted[0],
             max: sorted[sorted.len() - 1],
             mad: median(&deviations),
+            runs: values.len(),
         }
     }
 
@@ -47,6 +50,7 @@ impl Stats {
             min: get("min")?,
             max: get("max")?,
             mad: get("mad")?,
+            runs: value["runs"].as_array().map_or(1, |r| r.len().max(1)),
         })
     }
 }
@@ -62,24 +66,26 @@ pub enum Verdict {
     Regression,
 }
 
-/// How many median absolute deviations either side of the median count as
-/// a record's noise: robust to the odd run a busy machine slows down.
-const NOISE_MADS: f64 = 2.0;
+/// How many standard errors apart two medians must be to count as a
+/// difference: 2, one-sided 97.7% (specs/bench.md).
+const NOISE_ERRORS: f64 = 2.0;
 
 impl Stats {
-    fn noise(&self) -> (f64, f64) {
-        let spread = NOISE_MADS * self.mad;
-        (self.median - spread, self.median + spread)
+    /// The standard error of the median, from the runs' spread: for normal
+    /// noise 1.2533 sigma / sqrt(n), sigma estimated as 1.4826 MAD.
+    fn median_error(&self) -> f64 {
+        1.2533 * 1.4826 * self.mad / (self.runs as f64).sqrt()
     }
 }
 
 /// `now` against `before` with a tolerance (0.05 for 5%): a regression only
-/// where the median is slower beyond it and the two records' noise
-/// intervals (median ± 2 MAD) do not overlap.
+/// where the median is slower beyond it and the two medians differ beyond
+/// their noise (2 standard errors of their difference).
 pub fn verdict(now: &Stats, before: &Stats, tolerance: f64) -> Verdict {
+    let error = now.median_error().hypot(before.median_error());
     if now.median <= before.median * (1.0 + tolerance) {
         Verdict::Within
-    } else if now.noise().0 <= before.noise().1 {
+    } else if now.median - before.median <= NOISE_ERRORS * error {
         Verdict::Noise
     } else {
         Verdict::Regression
@@ -103,18 +109,30 @@ pub struct Judged {
     pub verdict: Verdict,
 }
 
-/// The figures a load on the machine leaves alone (specs/bench.md): a job's
-/// wall time over its floor's, run beside it, and its CPU seconds per frame.
-const STEADY: [(&str, &[&str]); 2] = [
+/// A job against its baseline: the figures compared, and whether the job
+/// regressed by the rule of specs/bench.md.
+pub struct Judgement {
+    pub figures: Vec<Judged>,
+    pub regression: bool,
+}
+
+/// The figures paired with the floor, run by run: the job's CPU time over
+/// the floor's (which neither time-slicing nor a contention that slows both
+/// alike moves), and its wall time over the floor's (which sees waiting).
+const PAIRED: [(&str, &[&str]); 2] = [
+    ("floor CPU ratio", &["floor", "cpu_ratio"]),
     ("floor ratio", &["floor", "ratio"]),
-    ("CPU s/frame", &["cpu_seconds_per_frame"]),
 ];
 
-/// `job` against the baseline's `before`, by each steady figure both
-/// records hold; by wall time when they share none (an older record).
-pub fn judge(job: &Value, before: &Value, tolerance: f64) -> Vec<Judged> {
+/// `job` against the baseline's `before` (specs/bench.md): by its two
+/// ratios to the floor, a regression when both are slower beyond the
+/// tolerance (two figures whose noise differs agree), or either is beyond
+/// the tolerance and its noise and the other not faster beyond both;
+/// without a floor (`--no-floor`), by its CPU seconds per frame; against an
+/// older record, by its median wall time.
+pub fn judge(job: &Value, before: &Value, tolerance: f64) -> Judgement {
     let get = |v: &Value, path: &[&str]| Stats::from_json(path.iter().fold(v, |v, k| &v[*k]));
-    let judged = |figure: &'static str, path: &[&str]| {
+    let judged = |&(figure, path): &(&'static str, &[&str])| {
         let (now, before) = (get(job, path)?, get(before, path)?);
         let verdict = verdict(&now, &before, tolerance);
         Some(Judged {
@@ -124,15 +142,28 @@ pub fn judge(job: &Value, before: &Value, tolerance: f64) -> Vec<Judged> {
             verdict,
         })
     };
-    let steady: Vec<Judged> = STEADY
-        .iter()
-        .filter_map(|(figure, path)| judged(figure, path))
-        .collect();
-    match steady.is_empty() {
-        true => judged("median wall", &["wall_seconds"])
-            .into_iter()
-            .collect(),
-        false => steady,
+    let paired: Vec<Judged> = PAIRED.iter().filter_map(judged).collect();
+    if paired.len() == 2 {
+        // Faster beyond the tolerance and the noise (the rule the other way).
+        let faster = |j: &Judged| verdict(&j.before, &j.now, tolerance) == Verdict::Regression;
+        let slower =
+            |j: &Judged, other: &Judged| j.verdict == Verdict::Regression && !faster(other);
+        let both = paired.iter().all(|j| j.verdict != Verdict::Within);
+        let regression = both || slower(&paired[0], &paired[1]) || slower(&paired[1], &paired[0]);
+        return Judgement {
+            figures: paired,
+            regression,
+        };
+    }
+    let alone = [
+        ("CPU s/frame", &["cpu_seconds_per_frame"][..]),
+        ("median wall", &["wall_seconds"][..]),
+    ];
+    let figures: Vec<Judged> = alone.iter().filter_map(judged).take(1).collect();
+    let regression = figures.iter().any(|j| j.verdict == Verdict::Regression);
+    Judgement {
+        figures,
+        regression,
     }
 }
 
@@ -250,32 +281,88 @@ mod tests {
     }
 
     #[test]
-    fn a_job_is_judged_by_its_steady_figures_or_else_by_wall() {
-        let stats = |m: f64| json!({"median": m, "min": m, "max": m, "mad": 0.0});
-        let old = json!({"wall_seconds": stats(1.0)});
-        let before = json!({"wall_seconds": stats(1.0), "floor": {"ratio": stats(2.0)},
-                            "cpu_seconds_per_frame": stats(0.5)});
-        // Twice the wall (a busy machine), the same ratio and CPU: no regression.
-        let busy = json!({"wall_seconds": stats(2.0), "floor": {"ratio": stats(2.0)},
-                          "cpu_seconds_per_frame": stats(0.5)});
-        let judged = judge(&busy, &before, 0.05);
-        let figures: Vec<_> = judged.iter().map(|j| (j.figure, j.verdict)).collect();
+    fn a_job_is_judged_by_its_ratios_to_the_floor_or_else_alone() {
+        let stats =
+            |m: f64| json!({"median": m, "min": m, "max": m, "mad": 0.0, "runs": vec![m; 5]});
+        let record = |wall: f64, ratio: f64, cpu_ratio: f64, cpu: f64| {
+            json!({"wall_seconds": stats(wall), "cpu_seconds_per_frame": stats(cpu),
+                   "floor": {"ratio": stats(ratio), "cpu_ratio": stats(cpu_ratio)}})
+        };
+        let before = record(1.0, 2.0, 1.5, 0.5);
+        let verdicts =
+            |j: &Judgement| -> Vec<_> { j.figures.iter().map(|f| (f.figure, f.verdict)).collect() };
+        // Three times the wall and more CPU a frame (a busy machine), the
+        // same ratios: no regression.
+        let busy = judge(&record(3.0, 2.0, 1.5, 0.6), &before, 0.05);
+        assert!(!busy.regression);
         assert_eq!(
-            figures,
+            verdicts(&busy),
             [
-                ("floor ratio", Verdict::Within),
-                ("CPU s/frame", Verdict::Within)
+                ("floor CPU ratio", Verdict::Within),
+                ("floor ratio", Verdict::Within)
             ]
         );
-        // More CPU per frame alone is a regression (a slower codec moves the floor too).
-        let codec = json!({"wall_seconds": stats(1.2), "floor": {"ratio": stats(2.0)},
-                           "cpu_seconds_per_frame": stats(0.6)});
-        assert_eq!(judge(&codec, &before, 0.05)[1].verdict, Verdict::Regression);
-        // Against a record without them: wall.
-        let judged = judge(&busy, &old, 0.05);
+        // Busy work planted in the job: both ratios up; a job that waits
+        // (asleep): its wall ratio alone.
+        assert!(judge(&record(1.2, 2.3, 1.7, 0.6), &before, 0.05).regression);
+        // Both up beyond the tolerance, each within its noise: they agree.
+        let noisy =
+            |m: f64| json!({"median": m, "min": m, "max": m, "mad": 0.5, "runs": vec![m; 5]});
+        let ratios = |ratio: Value, cpu_ratio: Value| {
+            json!({"wall_seconds": stats(1.2), "cpu_seconds_per_frame": stats(0.5),
+                   "floor": {"ratio": ratio, "cpu_ratio": cpu_ratio}})
+        };
+        let judged = judge(&ratios(noisy(2.2), noisy(1.6)), &before, 0.05);
         assert_eq!(
-            (judged[0].figure, judged[0].verdict),
-            ("median wall", Verdict::Regression)
+            verdicts(&judged),
+            [
+                ("floor CPU ratio", Verdict::Noise),
+                ("floor ratio", Verdict::Noise)
+            ]
         );
+        assert!(judged.regression);
+        // One up within its noise, the other within the tolerance: none.
+        assert!(!judge(&ratios(noisy(2.2), stats(1.55)), &before, 0.05).regression);
+        // The wall ratio up beyond its noise, the CPU ratio 7% lower within
+        // its noise: the wall ratio's regression stands.
+        assert!(judge(&ratios(stats(3.0), noisy(1.4)), &before, 0.05).regression);
+        assert!(judge(&record(1.5, 3.0, 1.5, 0.5), &before, 0.05).regression);
+        // One ratio up, the other faster beyond the tolerance: they
+        // contradict each other, no regression.
+        assert!(!judge(&record(1.0, 1.7, 1.8, 0.5), &before, 0.05).regression);
+        // Without a floor: CPU per frame; against an older record: wall.
+        let no_floor = |wall: f64, cpu: f64| json!({"wall_seconds": stats(wall), "cpu_seconds_per_frame": stats(cpu)});
+        let judged = judge(&no_floor(1.0, 0.6), &before, 0.05);
+        assert_eq!(verdicts(&judged), [("CPU s/frame", Verdict::Regression)]);
+        let old = json!({"wall_seconds": stats(1.0)});
+        let judged = judge(&busy_wall(), &old, 0.05);
+        assert_eq!(verdicts(&judged), [("median wall", Verdict::Regression)]);
+        assert!(judged.regression);
+    }
+
+    fn busy_wall() -> Value {
+        json!({"wall_seconds": {"median": 2.0, "min": 2.0, "max": 2.0, "mad": 0.0, "runs": [2.0]}})
+    }
+
+    #[test]
+    fn two_medians_differ_beyond_their_standard_errors() {
+        // Seven runs each, MAD 0.06 about 1.0: the medians' standard error
+        // 1.2533 x 1.4826 x 0.06 / sqrt(7) = 0.042 each, their difference's
+        // 0.060; 2 of them, 0.119.
+        let around =
+            |m: f64| Stats::of(&[m - 0.1, m - 0.06, m - 0.06, m, m + 0.06, m + 0.06, m + 0.1]);
+        assert!((around(1.0).mad - 0.06).abs() < 1e-12);
+        assert_eq!(verdict(&around(1.04), &around(1.0), 0.05), Verdict::Within);
+        assert_eq!(verdict(&around(1.10), &around(1.0), 0.05), Verdict::Noise);
+        assert_eq!(
+            verdict(&around(1.16), &around(1.0), 0.05),
+            Verdict::Regression
+        );
+        // The same spread over 28 runs: half the error.
+        let many = |m: f64| {
+            let runs = [m - 0.1, m - 0.06, m - 0.06, m, m + 0.06, m + 0.06, m + 0.1];
+            Stats::of(&runs.repeat(4))
+        };
+        assert_eq!(verdict(&many(1.08), &many(1.0), 0.05), Verdict::Regression);
     }
 }

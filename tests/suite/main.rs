@@ -4,7 +4,6 @@
 
 mod attributes;
 mod bench;
-mod bench_load;
 mod bench_report;
 mod blur;
 #[cfg(feature = "colour")]
