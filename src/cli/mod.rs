@@ -214,14 +214,27 @@ pub struct BenchArgs {
     /// Write the record here (JSON, specs/bench.md).
     #[arg(long, value_hint = ValueHint::FilePath)]
     pub json: Option<PathBuf>,
-    /// An earlier record: exit 1 if a job is slower beyond the tolerance and the noise.
-    #[arg(long, value_hint = ValueHint::FilePath)]
+    /// An earlier record: exit 1 if a job is slower beyond the tolerance and
+    /// the noise, by its ratio to the floor or its CPU per frame.
+    #[arg(long, value_hint = ValueHint::FilePath, conflicts_with = "against")]
     pub baseline: Option<PathBuf>,
+    /// Another exrcomp: run each job with both in turns, and say whether
+    /// this one is faster or slower (exit 1 if slower).
+    #[arg(long, value_hint = ValueHint::ExecutablePath)]
+    pub against: Option<PathBuf>,
+    /// Time no floor beside the jobs (halves the runs; the baseline is then
+    /// compared by CPU per frame alone).
+    #[arg(long)]
+    pub no_floor: bool,
+    /// A folder of earlier records (JSON): the HTML report draws each job's
+    /// throughput over them.
+    #[arg(long, value_hint = ValueHint::DirPath)]
+    pub history: Option<PathBuf>,
     /// Percent of the baseline's median a job may be slower by.
     #[arg(long, default_value_t = 5.0, allow_negative_numbers = true, value_parser = parse_tolerance)]
     pub tolerance: f64,
-    /// Draw the runs per job (and the baseline's) to this chart: FILE.svg
-    /// or FILE.png.
+    /// Draw the runs per job (and the baseline's or the other build's) to
+    /// this chart, FILE.svg or FILE.png, or a report, FILE.html.
     #[arg(long, value_hint = ValueHint::FilePath, value_parser = parse_chart)]
     pub report: Option<PathBuf>,
     /// Worker threads of the timed runs.
@@ -356,9 +369,9 @@ pub struct DeadlineArgs {
 
 fn parse_chart(text: &str) -> Result<PathBuf, String> {
     match Path::new(text).extension().and_then(|e| e.to_str()) {
-        Some("svg" | "png") => Ok(PathBuf::from(text)),
+        Some("svg" | "png" | "html") => Ok(PathBuf::from(text)),
         _ => Err(format!(
-            "'{text}': a chart is written as FILE.svg or FILE.png"
+            "'{text}': a chart is written as FILE.svg or FILE.png, a report as FILE.html"
         )),
     }
 }

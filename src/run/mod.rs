@@ -576,7 +576,7 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
         write_slate(slate, label, run)?;
     }
     let (report, summary) = run_with_progress(job, label, run, summary, first)?;
-    planted_delay();
+    planted_delay(label, summary.seconds);
     report.finish(&summary);
     if summary.interrupted {
         return Err(Error::new(
@@ -639,16 +639,37 @@ fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
     }
 }
 
-/// Test builds only: `EXRCOMP_TEST_DELAY=SECONDS` makes a run that much
-/// slower, a planted regression for `bench --baseline`'s tests.
-fn planted_delay() {
+/// Test builds only, planted regressions for `bench`'s tests, each
+/// `[COMMAND:]AMOUNT`, in every run or in `COMMAND`'s only (not the bench's
+/// floor, a transcode, when another command is named):
+/// `EXRCOMP_TEST_DELAY` makes a run AMOUNT seconds slower, asleep;
+/// `EXRCOMP_TEST_WORK` makes it slower by AMOUNT as a fraction of the run's
+/// `seconds` and of its CPU time, busy (one thread spinning).
+fn planted_delay(label: &str, seconds: f64) {
     #[cfg(debug_assertions)]
-    if let Some(s) = std::env::var("EXRCOMP_TEST_DELAY")
-        .ok()
-        .and_then(|s| s.parse::<f64>().ok())
     {
-        std::thread::sleep(std::time::Duration::from_secs_f64(s.clamp(0.0, 60.0)));
+        let planted = |name| {
+            let value = std::env::var(name).ok()?;
+            let (command, amount) = value.rsplit_once(':').unwrap_or((label, &value));
+            let amount = amount.parse::<f64>().ok()?.clamp(0.0, 60.0);
+            (command == label).then_some(std::time::Duration::from_secs_f64(amount))
+        };
+        if let Some(delay) = planted("EXRCOMP_TEST_DELAY") {
+            std::thread::sleep(delay);
+        }
+        if let Some(fraction) = planted("EXRCOMP_TEST_WORK") {
+            // Slower by the fraction in wall time and in CPU time both,
+            // whatever share of a core a loaded machine gives the spinning.
+            let until = std::time::Instant::now() + fraction.mul_f64(seconds);
+            let cpu = crate::stage_time::process_cpu;
+            let cpu_until = cpu().mul_f64(1.0 + fraction.as_secs_f64());
+            while std::time::Instant::now() < until || cpu() < cpu_until {
+                std::hint::spin_loop();
+            }
+        }
     }
+    #[cfg(not(debug_assertions))]
+    let _ = (label, seconds);
 }
 
 /// Per output frame, the files each input reads (and why, when a missing

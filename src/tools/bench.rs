@@ -2,282 +2,55 @@
 //! writing afresh into a folder of its own, with the statistics, the
 //! machine and a comparison against an earlier record (specs/bench.md).
 
-use crate::cli::command_line::{parse_command, Flow};
 use crate::cli::{BenchArgs, Size};
 use crate::error::{Error, Result};
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
 use crate::io::writer::write_whole;
-use crate::tools::bench_stats::{verdict, Stats, Verdict};
+use crate::tools::bench_run::{figure, own_exe, run_once, summarise, Run, Runner, TimedCommand};
+use crate::tools::bench_stats::{judge, Stats, Verdict};
 use serde_json::{json, Value};
-use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::Instant;
 
 /// The record's format, for readers of `--json`.
 const SCHEMA: &str = "exrcomp-bench-1";
 
-/// A job to time: exrcomp's arguments, the one that names the output (set
-/// anew for each run) and the input patterns (for `--cold`).
-struct TimedCommand {
-    name: String,
-    args: Vec<String>,
-    output: usize,
-    inputs: Vec<String>,
-}
-
-impl TimedCommand {
-    /// From a command (`over a.####.exr b.####.exr -o c.####.exr`) or a job
-    /// file alone (`shot.toml`).
-    fn new(name: String, command: &[String]) -> Result<Self> {
-        let command = match command {
-            [job] if job.ends_with(".toml") => vec!["run".to_string(), job.clone()],
-            _ => command.to_vec(),
-        };
-        let (mut task, subcommand, _) = parse_command(&command)?;
-        if ["bench", "farm", "info", "stitch", "demo"].contains(&subcommand.as_str()) {
-            return Err(Error::usage(format!(
-                "`{subcommand}` writes no frames: bench times a command that does (over, run, transcode...)"
-            )));
-        }
-        let mut inputs: Vec<String> = task
-            .files
-            .iter()
-            .filter(|f| f.1 == Flow::In)
-            .map(|f| task.args[f.0].clone())
-            .collect();
-        let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
-        if subcommand == "run" {
-            let plan = crate::cli::job_file::load(Path::new(&inputs[0]), None)?;
-            // The job file, then what it reads.
-            inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
-            if output.is_none() {
-                task.args.extend(["-o".to_string(), plan.output]);
-                output = Some(task.args.len() - 1);
-            }
-        }
-        let output = output.ok_or_else(|| Error::usage("the command to time names no output"))?;
-        Ok(TimedCommand {
-            name,
-            args: task.args,
-            output,
-            inputs,
-        })
-    }
-
-    /// The arguments of a run writing into `folder`.
-    fn args_into(&self, folder: &Path) -> Vec<String> {
-        let mut args = self.args.clone();
-        let name = Path::new(&args[self.output])
-            .file_name()
-            .map_or("out.exr".into(), |n| n.to_string_lossy().into_owned());
-        args[self.output] = folder.join(name).to_string_lossy().into_owned();
-        args.extend(["--json", "--quiet"].map(String::from));
-        args
-    }
-
-    /// Every input file on disk, for dropping from the page cache.
-    fn input_files(&self) -> Vec<PathBuf> {
-        let mut files = Vec::new();
-        for input in &self.inputs {
-            let (name, _) = crate::io::parts::split_part(input);
-            let Ok(pattern) = FramePattern::parse(name) else {
-                continue;
-            };
-            match pattern.is_sequence() {
-                true => files.extend(
-                    pattern
-                        .frames_on_disk()
-                        .unwrap_or_default()
-                        .into_iter()
-                        .map(|f| pattern.path(f)),
-                ),
-                false => files.push(PathBuf::from(name)),
-            }
-        }
-        files
-    }
-}
-
-/// One run's figures.
-struct Run {
-    wall: f64,
-    cpu: f64,
-    peak_rss: f64,
-    read_bytes: f64,
-    written_bytes: f64,
-    /// The sizes of the files it wrote.
-    output_bytes: f64,
-    /// The run's own `--json` summary.
-    summary: Value,
-}
-
-/// The sizes of the files in `folder` together.
-fn folder_bytes(folder: &Path) -> f64 {
-    std::fs::read_dir(folder)
-        .into_iter()
-        .flatten()
-        .filter_map(|e| e.ok()?.metadata().ok())
-        .map(|m| m.len() as f64)
-        .sum()
-}
-
-/// Drops `files` from the page cache, so the next run reads the storage.
-fn drop_cached(files: &[PathBuf]) {
-    for file in files {
-        if let Ok(f) = std::fs::File::open(file) {
-            use std::os::fd::AsRawFd;
-            // SAFETY: a valid descriptor; the call only advises the kernel.
-            unsafe { libc::posix_fadvise(f.as_raw_fd(), 0, 0, libc::POSIX_FADV_DONTNEED) };
-        }
-    }
-}
-
-/// Runs exrcomp with `args` once: wall time, the child's CPU and peak RSS
-/// (`wait4`) and the bytes it read and wrote (`/proc/PID/io`, read before
-/// the child is reaped).
-fn run_once(args: &[String], threads: Option<usize>) -> Result<Run> {
-    let exe = std::env::current_exe()
-        .map_err(|e| Error::internal(format!("cannot find exrcomp's own path: {e}")))?;
-    let mut command = Command::new(exe);
-    if let Some(threads) = threads {
-        command.arg(format!("--threads={threads}"));
-    }
-    let started = Instant::now();
-    let mut child = command
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| Error::internal(format!("cannot start exrcomp: {e}")))?;
-    // Standard error in a thread, so that neither pipe can fill and stall it.
-    let mut stderr = child.stderr.take().expect("piped");
-    let errors = std::thread::spawn(move || {
-        let mut text = String::new();
-        let _ = stderr.read_to_string(&mut text);
-        text
-    });
-    let mut out = String::new();
-    let _ = child.stdout.take().map(|mut s| s.read_to_string(&mut out));
-    let err = errors.join().unwrap_or_default();
-    let pid = child.id() as libc::pid_t;
-    // SAFETY: plain calls on our own child, with zeroed out-structs.
-    let (status, usage, io) = unsafe {
-        let mut info: libc::siginfo_t = std::mem::zeroed();
-        libc::waitid(
-            libc::P_PID,
-            pid as libc::id_t,
-            &mut info,
-            libc::WEXITED | libc::WNOWAIT,
-        );
-        let wall = started.elapsed();
-        let io = std::fs::read_to_string(format!("/proc/{pid}/io")).unwrap_or_default();
-        let (mut status, mut usage) = (0, std::mem::zeroed::<libc::rusage>());
-        libc::wait4(pid, &mut status, 0, &mut usage);
-        ((status, wall), usage, io)
-    };
-    let ((status, wall), io_field) = (status, |name: &str| {
-        io.lines()
-            .find_map(|l| l.strip_prefix(name)?.trim().parse::<f64>().ok())
-            .unwrap_or(0.0)
-    });
-    if !libc::WIFEXITED(status) || libc::WEXITSTATUS(status) != 0 {
-        let last = err.lines().last().unwrap_or("(no message)");
-        return Err(Error::new(
-            crate::error::Kind::Input,
-            format!("the timed command failed: {last}"),
-        ));
-    }
-    let seconds = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
-    Ok(Run {
-        wall: wall.as_secs_f64(),
-        cpu: seconds(usage.ru_utime) + seconds(usage.ru_stime),
-        peak_rss: usage.ru_maxrss as f64 * 1024.0,
-        read_bytes: io_field("rchar:"),
-        written_bytes: io_field("wchar:"),
-        output_bytes: 0.0,
-        summary: serde_json::from_str(out.trim()).unwrap_or(Value::Null),
-    })
-}
-
-/// One job's record.
-fn measure(job: &TimedCommand, args: &BenchArgs, folder: &Path) -> Result<Value> {
-    let files = job.input_files();
-    let mut runs = Vec::new();
+/// One job's record: its runs, each beside a run of its floor (in turns,
+/// floor first then job first, so that a load that drifts falls on both).
+fn measure(job: &TimedCommand, args: &BenchArgs, runner: &Runner) -> Result<Value> {
+    let exe = own_exe()?;
+    let floor = job.floor().filter(|_| !args.no_floor);
+    let (mut runs, mut floors) = (Vec::new(), Vec::new());
     for k in 0..args.warmup + args.runs {
-        let run_folder = folder.join(format!("{}-{k}", job.name));
-        std::fs::create_dir_all(&run_folder)
-            .map_err(|e| Error::output(&run_folder, None, format!("cannot create: {e}")))?;
-        if args.cold {
-            drop_cached(&files);
-        }
-        let mut run = run_once(&job.args_into(&run_folder), args.threads)
-            .map_err(|e| Error::new(e.kind, format!("{}: {}", job.name, e.message)))?;
-        run.output_bytes = folder_bytes(&run_folder);
-        if !args.keep {
-            let _ = std::fs::remove_dir_all(&run_folder);
-        }
+        let label = k.to_string();
+        let time_floor = || floor.as_ref().map(|f| runner.time(&exe, f, &label));
+        let (floor_run, run) = match k % 2 {
+            0 => (time_floor().transpose()?, runner.time(&exe, job, &label)?),
+            _ => {
+                let run = runner.time(&exe, job, &label)?;
+                (time_floor().transpose()?, run)
+            }
+        };
         if k >= args.warmup {
             runs.push(run);
+            floors.extend(floor_run);
         }
     }
-    let column = |f: fn(&Run) -> f64| runs.iter().map(f).collect::<Vec<f64>>();
-    let figure = |f: fn(&Run) -> f64| {
-        let values = column(f);
-        Stats::of(&values).json(&values)
-    };
-    let wall = Stats::of(&column(|r| r.wall));
-    // The engine's share of CPU outside the pool, where it reports one.
-    let shares: Vec<f64> = runs
-        .iter()
-        .filter_map(|r| r.summary["serial_share"].as_f64())
-        .collect();
-    let first = &runs[0].summary;
-    let frames = first["frames"].as_f64().unwrap_or(0.0);
-    let pixels = first["pixels"].as_f64().unwrap_or(0.0);
-    let per_second = |v: f64| v / wall.median.max(1e-9);
-    Ok(json!({
-        "name": job.name,
-        "command": job.args,
-        "frames": first["frames"],
-        "pixels": first["pixels"],
-        "wall_seconds": figure(|r| r.wall),
-        "cpu_seconds": figure(|r| r.cpu),
-        "peak_rss_bytes": figure(|r| r.peak_rss),
-        "output_bytes": figure(|r| r.output_bytes),
-        "frames_per_second": per_second(frames),
-        "megapixels_per_second": per_second(pixels) / 1e6,
-        "read_bytes_per_second": per_second(Stats::of(&column(|r| r.read_bytes)).median),
-        "written_bytes_per_second": per_second(Stats::of(&column(|r| r.written_bytes)).median),
-        "stages": stage_medians(&runs),
-        "serial_share": (!shares.is_empty()).then(|| Stats::of(&shares).median),
-    }))
-}
-
-/// The medians, over the runs, of every number under the runs' `stages`
-/// (the engine's per-stage figures, when it reports them).
-fn stage_medians(runs: &[Run]) -> Value {
-    fn walk(values: &[&Value]) -> Value {
-        match values[0] {
-            Value::Object(map) => Value::Object(
-                map.keys()
-                    .map(|k| {
-                        let inner: Vec<&Value> = values.iter().map(|v| &v[k.as_str()]).collect();
-                        (k.clone(), walk(&inner))
-                    })
-                    .collect(),
-            ),
-            Value::Number(_) => {
-                let numbers: Vec<f64> = values.iter().filter_map(|v| v.as_f64()).collect();
-                json!(Stats::of(&numbers).median)
-            }
-            other => other.clone(),
-        }
+    let mut record = summarise(job, &runs);
+    if let Some(floor) = &floor {
+        let ratios = |f: fn(&Run) -> f64| -> Value {
+            let ratios: Vec<f64> = runs.iter().zip(&floors).map(|(r, l)| f(r) / f(l)).collect();
+            Stats::of(&ratios).json(&ratios)
+        };
+        record["floor"] = json!({
+            "command": floor.args,
+            "wall_seconds": figure(&floors, |r| r.wall),
+            "cpu_seconds": figure(&floors, |r| r.cpu),
+            "ratio": ratios(|r| r.wall),
+            "cpu_ratio": ratios(|r| r.cpu),
+        });
     }
-    let stages: Vec<&Value> = runs.iter().map(|r| &r.summary["stages"]).collect();
-    walk(&stages)
+    Ok(record)
 }
 
 /// What the machine and this build are.
@@ -354,7 +127,7 @@ fn generate_plates(
             "--frames",
             &range,
         ];
-        run_once(&args.map(String::from), None)?;
+        run_once(&own_exe()?, &args.map(String::from), None)?;
     }
     Ok(())
 }
@@ -472,21 +245,24 @@ fn standard(size: Size, frames: usize, cache: &Path) -> Result<Vec<TimedCommand>
         .collect()
 }
 
-/// `exrcomp bench`.
-pub fn bench(args: &BenchArgs) -> Result<()> {
-    let jobs = match (args.standard, args.command.is_empty()) {
+/// The jobs `args` name: the standard workload or one command.
+fn jobs(args: &BenchArgs) -> Result<Vec<TimedCommand>> {
+    match (args.standard, args.command.is_empty()) {
         (true, true) => {
             let cache = args.cache.clone().unwrap_or_else(default_cache);
-            standard(args.size, args.frames, &cache)?
+            standard(args.size, args.frames, &cache)
         }
-        (false, false) => vec![TimedCommand::new(args.name.clone(), &args.command)?],
-        (true, false) => return Err(Error::usage("give --standard or a command, not both")),
-        (false, true) => {
-            return Err(Error::usage(
-                "give a command to time (after --), a JOB.toml, or --standard",
-            ))
-        }
-    };
+        (false, false) => Ok(vec![TimedCommand::new(args.name.clone(), &args.command)?]),
+        (true, false) => Err(Error::usage("give --standard or a command, not both")),
+        (false, true) => Err(Error::usage(
+            "give a command to time (after --), a JOB.toml, or --standard",
+        )),
+    }
+}
+
+/// `exrcomp bench`.
+pub fn bench(args: &BenchArgs) -> Result<()> {
+    let jobs = jobs(args)?;
     // The record and the chart replace nothing a job reads (checked before
     // the runs, which may take long).
     let records = [&args.json, &args.report].into_iter().flatten();
@@ -494,14 +270,28 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
         jobs.iter().flat_map(TimedCommand::input_files),
         records.map(|path| (None, path.clone())),
     )?;
+    let baseline = args.baseline.as_deref().map(read_record).transpose()?;
+    let history = match (&args.history, &args.report) {
+        (Some(folder), Some(_)) => read_history(folder)?,
+        _ => Vec::new(),
+    };
     let folder = std::env::temp_dir().join(format!("exrcomp-bench-{}", std::process::id()));
+    let runner = Runner {
+        threads: args.threads,
+        cold: args.cold,
+        keep: args.keep,
+        folder: &folder,
+    };
     let mut records = Vec::new();
     for job in &jobs {
         eprintln!(
             "bench: {} ({} runs after {} warm-up)",
             job.name, args.runs, args.warmup
         );
-        let record = measure(job, args, &folder);
+        let record = match &args.against {
+            Some(other) => crate::tools::bench_ab::measure_pairs(job, args, &runner, other),
+            None => measure(job, args, &runner),
+        };
         if !args.keep {
             let _ = std::fs::remove_dir_all(&folder);
         }
@@ -510,31 +300,81 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     if args.keep {
         eprintln!("bench: outputs kept in {}", folder.display());
     }
-    let record =
-        json!({"schema": SCHEMA, "exrcomp": build(), "machine": machine(), "jobs": records});
-    let baseline = match &args.baseline {
-        Some(path) => Some(read_record(path)?),
-        None => None,
+    let record = json!({"schema": SCHEMA, "exrcomp": build(), "machine": machine(),
+                        "date": utc_now(), "commit": std::env::var("EXRCOMP_COMMIT").ok(),
+                        "jobs": records});
+    let tolerance = args.tolerance / 100.0;
+    let (failures, comparison) = match &args.against {
+        Some(_) => (
+            crate::tools::bench_ab::print_pairs(&record, tolerance),
+            Some(crate::tools::bench_ab::other_as_record(&record)),
+        ),
+        None => (print_table(&record, baseline.as_ref(), tolerance), baseline),
     };
-    let regressions = print_table(&record, baseline.as_ref(), args.tolerance / 100.0);
     if let Some(path) = &args.json {
         let text = serde_json::to_string_pretty(&record).expect("JSON") + "\n";
         write_whole(path, text.as_bytes())?;
     }
     if let Some(path) = &args.report {
-        let chart = match path.extension().and_then(|e| e.to_str()) {
-            Some("png") => crate::tools::bench_chart::png(&record, baseline.as_ref()),
-            _ => crate::tools::bench_chart::svg(&record, baseline.as_ref()).into_bytes(),
+        let report = crate::tools::bench_report::Report {
+            record: &record,
+            comparison: comparison.as_ref(),
+            history: &history,
         };
-        write_whole(path, &chart)?;
+        write_whole(path, &report.file(path))?;
     }
-    match regressions.is_empty() {
-        true => Ok(()),
-        false => Err(Error::new(
+    match (failures.is_empty(), &args.against) {
+        (true, _) => Ok(()),
+        (false, against) => Err(Error::new(
             crate::error::Kind::Regression,
-            format!("slower than the baseline: {}", regressions.join("; ")),
+            match against {
+                Some(other) => format!("slower than {}: {}", other.display(), failures.join("; ")),
+                None => format!("slower than the baseline: {}", failures.join("; ")),
+            },
         )),
     }
+}
+
+/// Now, in UTC, as `2026-12-03T08:15:00Z`.
+fn utc_now() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs() as i64);
+    // Days to a civil date (Howard Hinnant's days_from_civil, inverted).
+    let (days, time) = (secs.div_euclid(86400), secs.rem_euclid(86400));
+    let z = days + 719468;
+    let era = z.div_euclid(146097);
+    let doe = z - era * 146097;
+    let yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    let (h, m, s) = (time / 3600, time / 60 % 60, time % 60);
+    format!("{year:04}-{month:02}-{day:02}T{h:02}:{m:02}:{s:02}Z")
+}
+
+/// The records in `folder` (its `.json` files that are bench records; others
+/// are passed over), in the order they were taken.
+fn read_history(folder: &Path) -> Result<Vec<Value>> {
+    let entries = std::fs::read_dir(folder).map_err(|e| {
+        Error::usage(format!(
+            "{}: cannot read the history: {e}",
+            folder.display()
+        ))
+    })?;
+    let mut records: Vec<(String, PathBuf, Value)> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .filter_map(|p| {
+            let record = read_record(&p).ok()?;
+            Some((record["date"].as_str().unwrap_or("").to_string(), p, record))
+        })
+        .collect();
+    // By date, then by name (records of the same second).
+    records.sort_by(|a, b| (&a.0, &a.1).cmp(&(&b.0, &b.1)));
+    Ok(records.into_iter().map(|r| r.2).collect())
 }
 
 fn default_cache() -> PathBuf {
@@ -564,48 +404,71 @@ fn read_record(path: &Path) -> Result<Value> {
 fn print_table(record: &Value, baseline: Option<&Value>, tolerance: f64) -> Vec<String> {
     let mut regressions = Vec::new();
     eprintln!(
-        "{:<12} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9} {:>9}  vs baseline",
-        "job", "wall s", "min", "max", "mad", "cpu s", "frames/s", "peak MiB"
+        "{:<12} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9} {:>9} {:>7}  vs baseline",
+        "job", "wall s", "min", "max", "mad", "cpu s", "frames/s", "peak MiB", "/floor"
     );
     for job in record["jobs"].as_array().into_iter().flatten() {
         let name = job["name"].as_str().unwrap_or("?");
-        let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
-        let before = crate::tools::bench_stats::same_job(baseline, job)
-            .and_then(|j| Stats::from_json(&j["wall_seconds"]));
-        let comparison = match before {
-            None => String::new(),
-            Some(before) => {
-                let ratio = wall.median / before.median;
-                match verdict(&wall, &before, tolerance) {
-                    Verdict::Within => format!("{ratio:.3}x"),
-                    Verdict::Noise => format!("{ratio:.3}x, within noise"),
-                    Verdict::Regression => {
-                        regressions.push(format!(
-                            "{name}: median wall {:.3} s against {:.3} s ({ratio:.3}x)",
-                            wall.median, before.median
-                        ));
-                        format!("{ratio:.3}x REGRESSION")
-                    }
-                }
-            }
+        let before = crate::tools::bench_stats::same_job(baseline, job);
+        let Some(judged) = before.map(|b| judge(job, b, tolerance)) else {
+            print_row(job, "");
+            continue;
         };
-        eprintln!(
-            "{name:<12} {:>9.3} {:>9.3} {:>9.3} {:>8.3} {:>9.3} {:>9.2} {:>9.1}  {comparison}",
-            wall.median,
-            wall.min,
-            wall.max,
-            wall.mad,
-            job["cpu_seconds"]["median"].as_f64().unwrap_or(0.0),
-            job["frames_per_second"].as_f64().unwrap_or(0.0),
-            job["peak_rss_bytes"]["median"].as_f64().unwrap_or(0.0) / 1048576.0,
-        );
+        let mut comparison: Vec<String> = judged
+            .figures
+            .iter()
+            .map(|j| {
+                let ratio = j.now.median / j.before.median;
+                match j.verdict {
+                    Verdict::Within => format!("{}: {ratio:.3}x", j.figure),
+                    Verdict::Noise => format!("{}: {ratio:.3}x within noise", j.figure),
+                    Verdict::Regression => format!("{}: {ratio:.3}x beyond noise", j.figure),
+                }
+            })
+            .collect();
+        if judged.regression {
+            comparison.push("REGRESSION".into());
+            let figures = judged.figures.iter().map(|j| {
+                let ratio = j.now.median / j.before.median;
+                format!(
+                    "{} {:.3} against {:.3} ({ratio:.3}x)",
+                    j.figure, j.now.median, j.before.median
+                )
+            });
+            regressions.push(format!(
+                "{name}: {}",
+                figures.collect::<Vec<_>>().join(", ")
+            ));
+        }
+        print_row(job, &comparison.join(", "));
     }
     regressions
+}
+
+/// A job's row of the table, then how it compares with the baseline.
+fn print_row(job: &Value, comparison: &str) {
+    let name = job["name"].as_str().unwrap_or("?");
+    let wall = Stats::from_json(&job["wall_seconds"]).expect("own record");
+    let floor_ratio = job["floor"]["ratio"]["median"].as_f64();
+    eprintln!(
+        "{name:<12} {:>9.3} {:>9.3} {:>9.3} {:>8.3} {:>9.3} {:>9.2} {:>9.1} {:>7}  {}",
+        wall.median,
+        wall.min,
+        wall.max,
+        wall.mad,
+        job["cpu_seconds"]["median"].as_f64().unwrap_or(0.0),
+        job["frames_per_second"].as_f64().unwrap_or(0.0),
+        job["peak_rss_bytes"]["median"].as_f64().unwrap_or(0.0) / 1048576.0,
+        floor_ratio.map_or("-".into(), |r| format!("{r:.3}")),
+        comparison,
+    );
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tools::bench_run::drop_cached;
+    use crate::tools::bench_stats::verdict;
 
     #[test]
     fn statistics_of_known_samples() {

@@ -7,16 +7,16 @@ use serde_json::Value;
 use std::fmt::Write;
 
 const ROW: f64 = 56.0;
-const LEFT: f64 = 150.0;
-const WIDTH: f64 = 560.0;
-const NOW: [u8; 3] = [0x1f, 0x6f, 0xd0];
+pub const LEFT: f64 = 150.0;
+pub const WIDTH: f64 = 560.0;
+pub const NOW: [u8; 3] = [0x1f, 0x6f, 0xd0];
 const BEFORE: [u8; 3] = [0x88, 0x88, 0x88];
-const AXIS: [u8; 3] = [0x99, 0x99, 0x99];
+pub const AXIS: [u8; 3] = [0x99, 0x99, 0x99];
 const INK: [u8; 3] = [0, 0, 0];
 const DOT: f64 = 4.0;
 
-/// What the chart is made of, in pixels from the top left.
-enum Shape {
+/// What a chart is made of, in pixels from the top left.
+pub enum Shape {
     /// Text whose baseline starts at (x, y).
     Text { x: f64, y: f64, text: String },
     Line {
@@ -27,19 +27,28 @@ enum Shape {
         colour: [u8; 3],
         width: f64,
     },
-    /// A run: a dot, its value as a tooltip in SVG.
+    /// A figure (a run): a dot, its value as a tooltip in SVG.
     Dot {
         x: f64,
         y: f64,
         colour: [u8; 3],
-        seconds: f64,
+        title: String,
+    },
+    /// A filled box, its figure as a tooltip in SVG.
+    Rect {
+        x: f64,
+        y: f64,
+        w: f64,
+        h: f64,
+        colour: [u8; 3],
+        title: String,
     },
 }
 
-struct Chart {
-    width: f64,
-    height: f64,
-    shapes: Vec<Shape>,
+pub struct Chart {
+    pub width: f64,
+    pub height: f64,
+    pub shapes: Vec<Shape>,
 }
 
 fn runs(job: &Value) -> Vec<f64> {
@@ -91,7 +100,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
                 x: x(v),
                 y,
                 colour,
-                seconds: v,
+                title: format!("{v} s"),
             }));
             if !values.is_empty() {
                 let median = x(crate::tools::bench_stats::Stats::of(values).median);
@@ -113,7 +122,7 @@ fn layout(record: &Value, baseline: Option<&Value>) -> Chart {
     }
 }
 
-fn escape(text: &str) -> String {
+pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -125,11 +134,25 @@ fn hex([r, g, b]: [u8; 3]) -> String {
 
 /// The chart as an SVG document.
 pub fn svg(record: &Value, baseline: Option<&Value>) -> String {
-    let chart = layout(record, baseline);
+    render_svg(&layout(record, baseline), true)
+}
+
+/// The runs' chart as SVG inside an HTML page.
+pub fn inline_svg(record: &Value, comparison: Option<&Value>) -> String {
+    render_svg(&layout(record, comparison), false)
+}
+
+/// `chart` as SVG: a document of its own (`standalone`, with its
+/// namespace), or an element inside an HTML page, which needs none.
+pub fn render_svg(chart: &Chart, standalone: bool) -> String {
     let mut out = String::new();
+    let namespace = match standalone {
+        true => " xmlns=\"http://www.w3.org/2000/svg\"",
+        false => "",
+    };
     let _ = writeln!(
         out,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+        "<svg{namespace} width=\"{w}\" height=\"{h}\" \
          font-family=\"sans-serif\" font-size=\"12\">\n\
          <rect width=\"{w}\" height=\"{h}\" fill=\"white\"/>",
         w = chart.width,
@@ -145,10 +168,17 @@ pub fn svg(record: &Value, baseline: Option<&Value>) -> String {
                 "<line x1=\"{x1:.1}\" y1=\"{y1}\" x2=\"{x2:.1}\" y2=\"{y2}\" stroke=\"{}\" stroke-width=\"{width}\"/>",
                 hex(*colour)
             ),
-            Shape::Dot { x, y, colour, seconds } => writeln!(
+            Shape::Dot { x, y, colour, title } => writeln!(
                 out,
-                "<circle cx=\"{x:.1}\" cy=\"{y}\" r=\"{DOT}\" fill=\"{}\"><title>{seconds:.4} s</title></circle>",
-                hex(*colour)
+                "<circle cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"{DOT}\" fill=\"{}\"><title>{}</title></circle>",
+                hex(*colour),
+                escape(title)
+            ),
+            Shape::Rect { x, y, w, h, colour, title } => writeln!(
+                out,
+                "<rect x=\"{x:.1}\" y=\"{y:.1}\" width=\"{w:.1}\" height=\"{h:.1}\" fill=\"{}\"><title>{}</title></rect>",
+                hex(*colour),
+                escape(title)
             ),
         };
     }
@@ -197,6 +227,15 @@ pub fn png(record: &Value, baseline: Option<&Value>) -> Vec<u8> {
                             true => set(x + w as f64, y, colour),
                             false => set(x, y + w as f64, colour),
                         }
+                    }
+                }
+            }
+            Shape::Rect {
+                x, y, w, h, colour, ..
+            } => {
+                for py in y as usize..(y + h).ceil() as usize {
+                    for px in x as usize..(x + w).ceil() as usize {
+                        set(px as f64, py as f64, colour);
                     }
                 }
             }

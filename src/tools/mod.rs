@@ -2,7 +2,10 @@
 //! sheet, farm submission, and `info`.
 
 pub mod bench;
+pub mod bench_ab;
 pub mod bench_chart;
+pub mod bench_report;
+pub mod bench_run;
 pub mod bench_stats;
 pub mod contact_sheet;
 pub mod demo;

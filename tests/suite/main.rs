@@ -4,6 +4,7 @@
 
 mod attributes;
 mod bench;
+mod bench_report;
 mod blur;
 #[cfg(feature = "colour")]
 mod colour;
