@@ -34,8 +34,8 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// with, for a ZIP input, `D_i = max(2 A_i W_i + a_i (A_i + 2 L_i) R_i,
 /// a_i (F_i + 2 L_i) R_i) b_i` (the strip being built and the one in the
 /// channel; chunks decoded apart from the strip, `a_i` 1 unless they
-/// inflate straight into it, `decode::direct`) and `Z_i = (min(T L_i, F_i
-/// + 2 L_i) + (1 - a_i) (A_i + 2 L_i)) R_i b_i` (its chunks read, at most T
+/// inflate straight into it, `decode::direct`) and `Z_i = (min(T L_i,
+/// F_i + 2 L_i) + (1 - a_i) (A_i + 2 L_i)) R_i b_i` (its chunks read, at most T
 /// over all inputs, and a strip's chunks the heap keeps: `DecodeTerms`);
 /// for other codecs `D_i = max(3 (A_i + 2 L_i) R_i + 2 A_i W_i, (F_i + 2
 /// L_i + 2 min(T L_i, F_i + 2 L_i)) R_i) b_i` and `Z_i = 0`. `W` and `S`
