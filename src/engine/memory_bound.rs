@@ -26,24 +26,31 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// Bytes at most resident while `plan` runs through its job's graph:
 ///
 /// ```text
-/// Σ_inputs max((1 + c_i) (A_i + 2 L_i) + 2 A_i, F_i + 2 L_i + c_i min(T L_i, F_i + 2 L_i)) R_i b_i
+/// Σ_inputs D_i + max_inputs Z_i
 ///     + max_live Σ W_n (S_n + 2 h_n) b_n + (4 + c_o + 2 B) S W b_o
 ///     + max_n T scratch_n + T codec + Σ_inputs D_i + 10 MiB
 /// ```
 ///
-/// with `W` and `S` the output's width and strip rows (at most the rows
-/// computed: a strip never holds more), `W_n` a node's region's width and
-/// `S_n` the most rows of its region a strip spans (`S` where nothing
-/// resamples), `R_i` the width an input is decoded over (its data window
-/// read: none for a black input), `F_i` the rows its first strip reads
-/// (its span, which its window then holds) and `A_i` the most a later one
-/// reads (what its span gained: `S` where nothing resamples), `T` the
-/// threads, and `B` the batches of chunks the writer lets wait
-/// (`writer::IN_FLIGHT`), each with its bytes laid out. ZIP chunks decode
-/// into the strip (`F_i` is 0 in the second term). An input read whole
-/// (its span its whole region: a turn near 90 degrees, readers that
-/// disagree) is decoded once, its first term `(S_i + 2 L_i + S_i + c_i
-/// min(T L_i, S_i + 2 L_i)) R_i b_i`, `c_i min(..) R_i b_i` for ZIP.
+/// with, for a ZIP input, `D_i = max(2 A_i W_i + a_i (A_i + 2 L_i) R_i,
+/// a_i (F_i + 2 L_i) R_i) b_i` (the strip being built and the one in the
+/// channel; chunks decoded apart from the strip, `a_i` 1 unless they
+/// inflate straight into it, `decode::direct`) and `Z_i = (min(T L_i,
+/// F_i + 2 L_i) + (1 - a_i) (A_i + 2 L_i)) R_i b_i` (its chunks read, at most T
+/// over all inputs, and a strip's chunks the heap keeps: `DecodeTerms`);
+/// for other codecs `D_i = max(3 (A_i + 2 L_i) R_i + 2 A_i W_i, (F_i + 2
+/// L_i + 2 min(T L_i, F_i + 2 L_i)) R_i) b_i` and `Z_i = 0`. `W` and `S`
+/// are the output's width and strip rows (at most the rows computed: a
+/// strip never holds more), `W_n` a node's region's width (`W_i` an
+/// input's) and `S_n` the most rows of its region a strip spans (`S` where
+/// nothing resamples), `R_i` the width an input is decoded over (its data
+/// window read, its chunks' width: none for a black input), `F_i` the rows
+/// its first strip reads (its span, which its window then holds) and `A_i`
+/// the most a later one reads (what its span gained: `S` where nothing
+/// resamples), `T` the threads, and `B` the batches of chunks the writer
+/// lets wait (`writer::IN_FLIGHT`), each with its bytes laid out. An input
+/// read whole (its span its whole region: a turn near 90 degrees, readers
+/// that disagree) is decoded once: its chunks decoded apart, the strip
+/// built of them and `c_i min(T L_i, S_i + 2 L_i) R_i b_i` in flight.
 /// `scratch_n` is a band's own buffers (`Op::scratch`), the nodes computed
 /// one after another; `codec` each thread's ZIP buffers
 /// (`codec_per_thread`), which hold what a ZIP input inflates and a ZIP
@@ -63,11 +70,17 @@ pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
             .sum::<u64>()
     };
     let reads = read_rows(plan, graph);
-    let decode: u64 = (0..plan.inputs.len())
+    // At most T chunks are in flight over all inputs (one pool, the inputs
+    // of a strip decoded together or one after another): the largest
+    // input's share is counted once.
+    let (held, shared) = (0..plan.inputs.len())
         .map(|i| {
-            decode_bytes(plan, graph, &spans, i, reads[i]) * bytes(&plan.header_of(i).channels.list)
+            let b = bytes(&plan.header_of(i).channels.list);
+            let terms = decode_bytes(plan, graph, &spans, i, reads[i]);
+            (terms.held * b, terms.shared * b)
         })
-        .sum();
+        .fold((0, 0), |(held, shared), (h, f)| (held + h, shared.max(f)));
+    let decode = held + shared;
     let held = window_rows(graph, &spans);
     let windows = graph.peak(|n| {
         let width = plan.regions.rect(n).size.width();
@@ -128,17 +141,39 @@ fn codec_per_thread(plan: &FramePlan, job: &Job) -> u64 {
     read.max(written) + padded + deflated
 }
 
-/// Input `i`'s decode terms in samples of a pixel (times its bytes per
-/// pixel: the bound's first two terms), beside its window (`read`: the
-/// rows its first strip reads and the most a later one does).
+/// Input `i`'s decode terms, in samples (times its bytes per pixel: the
+/// bound's first two terms).
+struct DecodeTerms {
+    /// What it holds whatever the other inputs do: its strips and the
+    /// chunks decoded apart from them.
+    held: u64,
+    /// What the inputs' decodes share, counted for the largest (ZIP only;
+    /// other codecs' are in `held`): its chunks being read and inflated,
+    /// at most one per thread over all inputs, and where they inflate
+    /// straight into the strip, a strip's chunks more: the heap keeps
+    /// freed chunk and strip buffers (one arena, untrimmed), and without
+    /// them a 4K noise blur at 8 threads peaked at 119.8 MiB over a bound
+    /// of 116.
+    shared: u64,
+}
+
+/// Input `i`'s decode terms beside its window (`read`: the rows its first
+/// strip reads and the most a later one does). Chunks are as wide as the
+/// input's data window (`R_i`), strips as its region (`W_i`: a crop's
+/// narrower, a small input's wider).
 fn decode_bytes(
     plan: &FramePlan,
     graph: &Graph,
     spans: &[usize],
     i: usize,
     read: (u64, u64),
-) -> u64 {
+) -> DecodeTerms {
     let width = plan.read[i].size.width() as u64;
+    let strip_width = graph
+        .input_node(i)
+        .map_or(plan.computed, |n| plan.regions.rect(n))
+        .size
+        .width() as u64;
     let threads = rayon::current_num_threads() as u64;
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
     let rows = graph.input_node(i).map_or(s, |n| spans[n] as u64);
@@ -150,29 +185,56 @@ fn decode_bytes(
     // Chunks decoded apart from the strip (all but ZIP's: `decode::direct`),
     // which becomes the input's window.
     let direct = decodes_direct(plan, graph, i);
-    let apart = |rows: u64| if direct { 0 } else { rows + 2 * lines };
+    let apart = |rows: u64| {
+        if direct {
+            0
+        } else {
+            (rows + 2 * lines) * width
+        }
+    };
     // A chunk's bytes read and inflated per thread; ZIP inflates into the
     // thread's own buffer (`codec_per_thread`).
-    let copies = 2 - inflates(plan, i) as u64;
-    let in_flight = |rows: u64| copies * (threads * lines).min(rows + 2 * lines);
-    let rows = match whole {
+    let zip = inflates(plan, i);
+    let copies = 2 - zip as u64;
+    let in_flight = |rows: u64| copies * (threads * lines).min(rows + 2 * lines) * width;
+    let (held, shared) = match whole {
         // Decoded once: its chunks, the strip built of them (unless they
         // were decoded into it), and the chunks in flight.
-        true if direct => in_flight(rows),
-        true => apart(rows) + rows + in_flight(rows),
+        true if direct => (0, in_flight(rows)),
+        true => (apart(rows) + rows * strip_width, in_flight(rows)),
         // The first strip reads the rows of its span (the window then
         // holds them); each later one only those its span gained: its
-        // chunks read, inflated and decoded, the strip built of them and
-        // the one in the channel.
-        // (A strip's rows at least where spans are strips: the last strip
-        // may be shorter, the bound is the steady state's.)
+        // chunks decoded apart, the strip built of them and the one in the
+        // channel; ZIP chunks read one per thread at most, freed once
+        // inflated. (A strip's rows at least where spans are strips: the
+        // last strip may be shorter, the bound is the steady state's.)
         false => {
             let (first, later) = read;
             let later = later.max(s.min(first));
-            ((1 + copies) * (later + 2 * lines) + 2 * later).max(apart(first) + in_flight(first))
+            let strips = 2 * later * strip_width;
+            match zip {
+                true => (
+                    (apart(later) + strips).max(apart(first)),
+                    in_flight(first.max(later)) + direct as u64 * (later + 2 * lines) * width,
+                ),
+                // Other codecs' intermediates (PIZ's Huffman tables) are
+                // not counted apart: all of a strip's chunks read and
+                // decompressed, on this input's account.
+                false => (
+                    ((1 + copies) * (later + 2 * lines) * width + strips)
+                        .max(apart(first) + in_flight(first)),
+                    0,
+                ),
+            }
         }
     };
-    rows * width
+    match zip {
+        true => DecodeTerms { held, shared },
+        false => DecodeTerms {
+            held: held + shared,
+            shared: 0,
+        },
+    }
 }
 
 /// Whether input `i`'s chunks decode straight into its strips (as

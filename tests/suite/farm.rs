@@ -857,14 +857,17 @@ fn amount(template: &Value, name: &str) -> u64 {
 /// Z and vectors: 20 bytes a pixel) and bg (12 bytes, as the result), W
 /// wide, strips of S rows, ZIP blocks of 16 lines: both inputs and the
 /// merge alive at once, none with a halo; ZIP inputs inflate into the
-/// thread's buffers (c_i = 1) and the ZIP output transforms there (c_o =
-/// 0); the writer's two batches waiting, each also laid out; the thread's
+/// thread's buffers and then straight into the strip (two strips each, and
+/// for the larger input, fg, its chunks read, T L rows at most, and a
+/// strip's chunks the heap keeps); the ZIP output transforms in the
+/// thread's buffers (c_o = 0); the writer's two batches waiting, each also
+/// laid out; the thread's
 /// codec buffers: the largest block (fg's), a read block with its 64 bytes
 /// of padding, an output block deflated (1/512 over) and the compressors at
 /// the default level (660 KiB libdeflate, 300 KiB igzip).
 fn over_bound_by_hand(w: u64, s: u64) -> u64 {
     let (l, fg, bg) = (16, 20, 12);
-    let decode = w * (fg + bg) * (2 * (s + 2 * l) + 2 * s);
+    let decode = w * (fg + bg) * 2 * s + w * fg * (l.min(s + 2 * l) + s + 2 * l);
     let windows = w * s * (fg + bg + bg);
     let encode = (4 + 2 * 2) * s * w * bg;
     let (read, written) = (w * l * fg, w * l * bg);
