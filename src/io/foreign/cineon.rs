@@ -4,8 +4,7 @@
 //! attributes. specs/file-format.md, "Cineon".
 
 use super::raw::{self, Packing, Raw};
-use super::{frame_rate, sorted_components, string, Fields, Foreign, Format};
-use crate::io::positioned::read_at;
+use super::{frame_rate, header_bytes, sorted_components, string, Fields, Foreign, Format};
 use exr::meta::attribute::{AttributeValue, SampleType, Text};
 use std::fs::File;
 
@@ -88,12 +87,7 @@ fn attributes(f: &Fields, film: bool) -> Vec<(&'static str, AttributeValue)> {
 /// Opens a Cineon file of `len` bytes: its header read and checked (sizes
 /// against the file's length), its rows read on demand.
 pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
-    if len < HEADER as u64 {
-        return Err(format!(
-            "truncated Cineon: {len} bytes, less than its {HEADER}-byte header"
-        ));
-    }
-    let bytes = read_at(file, 0, (len as usize).min(FILM))?;
+    let bytes = header_bytes(file, len, (HEADER, FILM), "Cineon")?;
     let f = Fields {
         big_endian: bytes[0] == 0x80,
         bytes: &bytes,

@@ -6,8 +6,7 @@
 //! attributes. specs/file-format.md, "DPX".
 
 use super::raw::{self, Packing, Raw};
-use super::{frame_rate, sorted_components, string, Fields, Foreign, Format};
-use crate::io::positioned::read_at;
+use super::{frame_rate, header_bytes, sorted_components, string, Fields, Foreign, Format};
 use exr::meta::attribute::{AttributeValue, SampleType, TimeCode};
 use std::fs::File;
 
@@ -166,12 +165,7 @@ fn capture_date(stamp: Option<String>) -> Option<AttributeValue> {
 /// Opens a DPX file of `len` bytes: its header read and checked (sizes
 /// against the file's length), its rows read on demand.
 pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
-    if len < GENERIC as u64 {
-        return Err(format!(
-            "truncated DPX: {len} bytes, less than its {GENERIC}-byte header"
-        ));
-    }
-    let bytes = read_at(file, 0, (len as usize).min(INDUSTRY))?;
+    let bytes = header_bytes(file, len, (GENERIC, INDUSTRY), "DPX")?;
     let f = Fields {
         big_endian: &bytes[..4] == b"SDPX",
         bytes: &bytes,

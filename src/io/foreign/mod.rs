@@ -141,6 +141,22 @@ pub fn header(
     header
 }
 
+/// The first `most` bytes of a `format` file of `len` bytes (its headers),
+/// refused when the file is shorter than its `least`-byte header.
+pub fn header_bytes(
+    file: &File,
+    len: u64,
+    (least, most): (usize, usize),
+    format: &str,
+) -> Result<Vec<u8>, String> {
+    if len < least as u64 {
+        return Err(format!(
+            "truncated {format}: {len} bytes, less than its {least}-byte header"
+        ));
+    }
+    crate::io::positioned::read_at(file, 0, (len as usize).min(most))
+}
+
 /// A fixed-length text field: up to its first NUL, trimmed; `None` when
 /// empty or not printable (an unset field is zeros or 0xff bytes).
 pub fn text_field(bytes: &[u8]) -> Option<String> {
