@@ -546,7 +546,7 @@ fn a_cineon_file_reads_as_its_codes() {
 }
 
 /// `../shared/foreign-images`, or `None` (a skipped check).
-fn foreign_images() -> Option<PathBuf> {
+pub fn foreign_images() -> Option<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/foreign-images");
     if root.is_dir() {
         return Some(root);

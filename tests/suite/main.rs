@@ -7,6 +7,7 @@ mod bench;
 mod blur;
 #[cfg(feature = "colour")]
 mod colour;
+mod colour_auto;
 mod colour_metadata;
 mod common;
 mod crop;
