@@ -669,7 +669,8 @@ mod tests {
             &[
                 ("translate", "2.5,-1.25"),
                 ("rotate", "30"),
-                ("scale", "1.3,0.8"),
+                // Enlarging: shrinking widens the filter past bilinear.
+                ("scale", "1.3,1.2"),
                 ("skew", "0.1,0"),
                 ("center", "10,5"),
                 ("filter", "triangle"),
@@ -684,7 +685,7 @@ mod tests {
         let inverse = |x: f64, y: f64| {
             let (x, y) = (x - 2.5 - cx, (h as f64 - y) + 1.25 - cy);
             let (x, y) = (c * x + s * y, -s * x + c * y);
-            let (x, y) = (x / 1.3, y / 0.8);
+            let (x, y) = (x / 1.3, y / 1.2);
             let x = x - 0.1 * y;
             (x + cx, h as f64 - (y + cy))
         };
