@@ -513,7 +513,12 @@ fn build(
             let args: Vec<NodeId> = inputs[n].iter().map(|i| built[i]).collect();
             // Measured on the header the node's input brings (none: the
             // op's own error, of its input count, follows).
-            let read = header_source(&inputs, n);
+            // Followed down only for ops that measure: a chain of a hundred
+            // thousand premults must not walk it at each node.
+            let read = match op.measure {
+                Some(_) => header_source(&inputs, n),
+                None => n,
+            };
             let measured = match (op.measure, args.last(), &nodes[read].kind) {
                 (Some(_), Some(&last), Kind::Read(_)) => {
                     let input = reads.iter().position(|&r| r == read).unwrap_or(0);
