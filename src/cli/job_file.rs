@@ -4,8 +4,9 @@
 
 use crate::engine::graph::{Graph, GraphBuilder, NodeId};
 use crate::error::{Error, Result};
+use crate::io::attributes::Edit;
 use crate::io::sequence::{split_time, InputTime};
-use crate::ops::declare::{Args, Operation, REPEATED};
+use crate::ops::declare::{Args, Measured, Operation, REPEATED};
 use crate::ops::layers::Selection;
 use crate::run::settings::{RunArgs, WriteArgs};
 use clap::{Args as _, FromArgMatches as _};
@@ -45,6 +46,28 @@ pub struct JobFileContents {
     /// The write node's keys, as the options of those names take them.
     pub write: WriteArgs,
 }
+
+/// What an op node that measures parameters (`from = "auto"`) is measured
+/// on: the read whose header reaches it (following last inputs down, as
+/// the write's header is found), and the attribute edits of the ops
+/// between (`Op::attributes`: an upstream conversion's `colorInteropID`).
+pub struct Reaching {
+    /// The read's file as the command line names it (with `@TIME`), and
+    /// its part.
+    pub read: String,
+    pub part: Option<String>,
+    /// The job's output and frames, as its write node and `frames` say.
+    pub output: String,
+    pub frames: Option<String>,
+    pub edits: Vec<Edit>,
+    /// "job.toml:12 (node 'cc')", for its messages.
+    pub place: String,
+}
+
+/// The first pass that measures an op node's parameters from the read
+/// that reaches it (src/cli/commands.rs: `Operation::measure` on a job of
+/// that read).
+pub type FirstPass<'a> = dyn Fn(&'static Operation, &Args, &Reaching) -> Result<Measured> + 'a;
 
 /// A file name in the job as a path: relative ones are relative to the job
 /// file's folder, so a shot's job file travels with it; a URI
@@ -92,8 +115,8 @@ impl<'a> Source<'a> {
 }
 
 /// The job file at `path`, its operations' lengths in pixels scaled by
-/// `proxy` when it is given.
-pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobFileContents> {
+/// `proxy` when it is given, its nodes' measured parameters by `measure`.
+pub fn load(path: &Path, proxy: Option<f32>, measure: &FirstPass) -> Result<JobFileContents> {
     let text = crate::io::reader::open_regular(path)
         .and_then(std::io::read_to_string)
         .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
@@ -110,7 +133,7 @@ pub fn load(path: &Path, proxy: Option<f32>) -> Result<JobFileContents> {
         .iter()
         .map(|n| Node::new(&at, n))
         .collect::<Result<_>>()?;
-    build(&at, &nodes, file.frames)
+    build(&at, &nodes, file.frames, measure)
 }
 
 enum Kind {
@@ -425,15 +448,27 @@ fn links(at: &Source, nodes: &[Node]) -> Result<(usize, Vec<Vec<usize>>)> {
     Ok((write, inputs))
 }
 
-fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobFileContents> {
+fn build(
+    at: &Source,
+    nodes: &[Node],
+    frames: Option<String>,
+    measure: &FirstPass,
+) -> Result<JobFileContents> {
     let (write, inputs) = links(at, nodes)?;
 
     // Every operation checked (parameters, input count) before the graph is:
-    // built once on inputs of its own.
+    // built once on inputs of its own (those that measure, their parameters
+    // only: they are built when the files have been read).
     for (n, node) in nodes.iter().enumerate() {
-        if let Kind::Op(op) = node.kind {
-            let (mut scratch, ids) = GraphBuilder::with_inputs(inputs[n].len());
-            operation(at, node, op, &mut scratch, &ids)?;
+        match node.kind {
+            Kind::Op(op) if op.measure.is_none() => {
+                let (mut scratch, ids) = GraphBuilder::with_inputs(inputs[n].len());
+                operation(at, node, op, &mut scratch, &ids, Vec::new())?;
+            }
+            Kind::Op(op) => {
+                node.args(at, op)?;
+            }
+            _ => {}
         }
     }
     // Depth first from the write: reads first, then operations so that each
@@ -470,11 +505,36 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobFileC
     for (g, &r) in reads.iter().enumerate() {
         built.insert(r, graph.input(g));
     }
+    let Kind::Write(output) = &nodes[write].kind else {
+        unreachable!("write is a write node")
+    };
     for &n in &order {
         if let Kind::Op(op) = nodes[n].kind {
             let args: Vec<NodeId> = inputs[n].iter().map(|i| built[i]).collect();
+            // Measured on the header the node's input brings (none: the
+            // op's own error, of its input count, follows).
+            // Followed down only for ops that measure: a chain of a hundred
+            // thousand premults must not walk it at each node.
+            let read = match op.measure {
+                Some(_) => header_source(&inputs, n),
+                None => n,
+            };
+            let measured = match (op.measure, args.last(), &nodes[read].kind) {
+                (Some(_), Some(&last), Kind::Read(_)) => {
+                    let input = reads.iter().position(|&r| r == read).unwrap_or(0);
+                    let reaching = Reaching {
+                        output: beside(at.path, output),
+                        frames: frames.clone(),
+                        edits: graph.edits(input, last),
+                        place: nodes[n].place(at),
+                        ..read_of(at, &nodes[read])?
+                    };
+                    measure(op, &nodes[n].args(at, op)?, &reaching)?.values
+                }
+                _ => Vec::new(),
+            };
             graph.locate(Some(nodes[n].place(at)));
-            let id = operation(at, &nodes[n], op, &mut graph, &args)?;
+            let id = operation(at, &nodes[n], op, &mut graph, &args, measured)?;
             built.insert(n, id);
         }
     }
@@ -486,30 +546,44 @@ fn build(at: &Source, nodes: &[Node], frames: Option<String>) -> Result<JobFileC
     }
 
     // The header comes from the bottom-most input: follow the last input.
-    let mut source = root;
-    while let Some(&last) = inputs[source].last() {
-        source = last;
-    }
+    let source = header_source(&inputs, root);
     let out = &nodes[write];
-    let Kind::Write(output) = &out.kind else {
-        unreachable!("write is a write node")
-    };
     Ok(JobFileContents {
         reads: reads
             .iter()
-            .map(|&r| {
-                let Kind::Read(file) = &nodes[r].kind else {
-                    unreachable!("reads are read nodes")
-                };
-                let part = nodes[r].get("part").map(|v| part(at, v)).transpose()?;
-                Ok((read_file(at, &nodes[r], beside(at.path, file))?, part))
-            })
+            .map(|&r| read_of(at, &nodes[r]).map(|read| (read.read, read.part)))
             .collect::<Result<_>>()?,
         header_from: reads.iter().position(|&r| r == source).unwrap_or(0),
         graph: graph.finish(),
         output: beside(at.path, output),
         frames,
         write: write_settings(at, out)?,
+    })
+}
+
+/// The read whose header node `n`'s result keeps: its last input's, down
+/// to a read.
+fn header_source(inputs: &[Vec<usize>], n: usize) -> usize {
+    let mut source = n;
+    while let Some(&last) = inputs[source].last() {
+        source = last;
+    }
+    source
+}
+
+/// Read node `node`'s file, as the command line names it, and part (the
+/// rest of `Reaching` empty).
+fn read_of(at: &Source, node: &Node) -> Result<Reaching> {
+    let Kind::Read(file) = &node.kind else {
+        unreachable!("reads are read nodes")
+    };
+    Ok(Reaching {
+        read: read_file(at, node, beside(at.path, file))?,
+        part: node.get("part").map(|v| part(at, v)).transpose()?,
+        output: String::new(),
+        frames: None,
+        edits: Vec::new(),
+        place: String::new(),
     })
 }
 
@@ -609,13 +683,14 @@ fn read_file(at: &Source, node: &Node, file: String) -> Result<String> {
 }
 
 /// Op node `node`'s nodes added to `graph` on `inputs`, its input count
-/// and every parameter checked.
+/// and every parameter checked, with the values `measured` for it.
 fn operation(
     at: &Source,
     node: &Node,
     op: &'static Operation,
     graph: &mut GraphBuilder,
     inputs: &[NodeId],
+    measured: Vec<(&'static str, String)>,
 ) -> Result<NodeId> {
     if !op.takes(inputs.len()) {
         return at.error(
@@ -629,6 +704,7 @@ fn operation(
         );
     }
     let mut args = node.args(at, op)?;
+    args.values.extend(measured);
     if let Some(factor) = at.proxy {
         op.scale_lengths(&mut args, factor as f64)
             .or_else(|m| at.error(node.span.clone(), format!("--proxy-scale: {m}")))?;

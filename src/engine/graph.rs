@@ -257,6 +257,13 @@ impl GraphBuilder {
         self.origin = origin.map(Arc::from);
     }
 
+    /// The attribute edits on the way from input `from` to `node`
+    /// (`Graph::edits` of the graph ending there): what a job file's node
+    /// sees of the header its input brings (`from = "auto"`).
+    pub fn edits(&self, from: usize, node: NodeId) -> Vec<Edit> {
+        edits(&self.nodes[..=node.0], from)
+    }
+
     /// The graph whose output is the last node added.
     pub fn finish(self) -> Graph {
         assert!(!self.nodes.is_empty(), "a graph has nodes");
@@ -382,15 +389,7 @@ impl Graph {
     /// order; an op reached from it by more than one way counts once, by
     /// its first input that is.
     pub fn edits(&self, from: usize) -> Vec<Edit> {
-        let edits = self.evaluate(
-            |i| (i == from).then(Vec::new),
-            |op, args: &[Option<Vec<Edit>>]| {
-                let mut edits = args.iter().flatten().next()?.clone();
-                edits.extend(op.attributes());
-                Some(edits)
-            },
-        );
-        edits[self.output()].clone().unwrap_or_default()
+        edits(&self.nodes, from)
     }
 
     /// How far the output reaches into the inputs: the deepest sums of
@@ -420,19 +419,43 @@ impl Graph {
         input: impl Fn(usize) -> T,
         combine: impl Fn(&dyn Op, &[T]) -> T,
     ) -> Vec<T> {
-        let mut values: Vec<T> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
-            let value = match node {
-                Node::Input(i) => input(*i),
-                Node::Op { op, inputs, .. } => {
-                    let args: Vec<T> = inputs.iter().map(|&n| values[n].clone()).collect();
-                    combine(op.as_ref(), &args)
-                }
-            };
-            values.push(value);
-        }
-        values
+        evaluate(&self.nodes, input, combine)
     }
+}
+
+/// Each of `nodes`' values: an input's from `input`, an op's by `combine`
+/// from its inputs' values.
+fn evaluate<T: Clone>(
+    nodes: &[Node],
+    input: impl Fn(usize) -> T,
+    combine: impl Fn(&dyn Op, &[T]) -> T,
+) -> Vec<T> {
+    let mut values: Vec<T> = Vec::with_capacity(nodes.len());
+    for node in nodes {
+        let value = match node {
+            Node::Input(i) => input(*i),
+            Node::Op { op, inputs, .. } => {
+                let args: Vec<T> = inputs.iter().map(|&n| values[n].clone()).collect();
+                combine(op.as_ref(), &args)
+            }
+        };
+        values.push(value);
+    }
+    values
+}
+
+/// `Graph::edits` of the graph `nodes` whose output is their last.
+fn edits(nodes: &[Node], from: usize) -> Vec<Edit> {
+    let edits = evaluate(
+        nodes,
+        |i| (i == from).then(Vec::new),
+        |op, args: &[Option<Vec<Edit>>]| {
+            let mut edits = args.iter().flatten().next()?.clone();
+            edits.extend(op.attributes());
+            Some(edits)
+        },
+    );
+    edits.last().cloned().flatten().unwrap_or_default()
 }
 
 /// What an op keeps of one input's samples (`Op::carries`).

@@ -8,6 +8,7 @@ use super::layers::Selection;
 use crate::engine::graph::{GraphBuilder, NodeId};
 use crate::engine::plan::Job;
 use crate::error::Result;
+use crate::io::attributes::Edit;
 use crate::params::Bound;
 use std::collections::BTreeMap;
 
@@ -32,15 +33,17 @@ pub struct Operation {
     /// Adds the operation's nodes reading `inputs` (one per declared input,
     /// or more when it repeats); the last node added is the result.
     pub build: fn(&Args, &mut GraphBuilder, &[NodeId]) -> std::result::Result<NodeId, String>,
-    /// On the command line, before the graph is built: parameters measured
-    /// from the inputs (by a first pass over `job`, an identity graph of
-    /// them) where they were not given. In a dry run (the `bool`) it reads
-    /// no pixels.
+    /// Before the graph is built: parameters measured from the inputs (by a
+    /// first pass over `job`, an identity graph of them) where they were
+    /// not given. A job file's node measures its input 0, the read whose
+    /// header reaches it, with the attribute edits of the ops on the way
+    /// (`Op::attributes`; none on the command line). In a dry run (the
+    /// `bool`) it reads no pixels.
     pub measure: Option<Measure>,
 }
 
 /// Measures parameters from a first pass over the inputs.
-pub type Measure = fn(&Args, &Job, bool) -> Result<Measured>;
+pub type Measure = fn(&Args, &Job, &[Edit], bool) -> Result<Measured>;
 
 /// Parameters measured: name and value as given on the command line, and
 /// notes saying how, which a dry run prints.
@@ -290,7 +293,7 @@ pub struct Args {
     pub values: BTreeMap<&'static str, String>,
     pub layers: Selection,
     pub straight: bool,
-    /// Built for a job file, where no first pass measures anything.
+    /// Built for a job file, whose node's input may be another node's.
     pub job_file: bool,
 }
 

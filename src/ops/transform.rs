@@ -14,7 +14,7 @@
 use super::crop::copy_moved;
 use super::declare::{params, Args, Length, Operation, Value};
 use super::resize::{nearest_only, Filter};
-use super::warp::{SampleMap, Taps, Weights};
+use super::warp::{most_taps, SampleMap, Taps, Weights};
 use crate::engine::graph::{union, Band, Carried, Display, GraphBuilder, NodeId, Op};
 use crate::io::rows::{Rows, RowsMut};
 use crate::params::{Bound, CENTER, ROTATE, SKEW, TRANSFORM_SCALE, TRANSLATE};
@@ -114,11 +114,12 @@ impl Value for Sampler {
 }
 
 impl Sampler {
-    /// Pixels on each side of a source point that its taps may reach.
-    fn reach(self) -> f64 {
+    /// Pixels on each side of a source point that its taps may reach, the
+    /// filter widened by `stretch` (`SampleMap::stretch`'s larger).
+    fn reach(self, stretch: f32) -> f64 {
         match self {
             Sampler::Impulse => 1.0,
-            Sampler::Filter(f) => (f.width() as f64 / 2.0).ceil() + 1.0,
+            Sampler::Filter(f) => (f.width() as f64 * stretch as f64 / 2.0).ceil() + 1.0,
         }
     }
 }
@@ -406,12 +407,20 @@ fn covering([x0, y0, x1, y1]: [f64; 4], by: f64) -> IntegerBounds {
 
 impl Op for Transform {
     /// A row's taps (none for an exact map: a move copies, a flip takes
-    /// the nearest samples) and nearest samples, vectors grown by doubling
-    /// (twice the columns at most), and its values.
+    /// the nearest samples, and their weights along each axis) and nearest
+    /// samples, vectors grown by doubling (twice the columns at most), and
+    /// its values.
     fn scratch(&self, band: &Band) -> usize {
-        let weights = match self.maps.get().is_some_and(|m| m.exact) {
+        let maps = self.maps.get();
+        // Asked before any frame: the unwidened filter's.
+        let (s, t) = maps.map_or((1.0, 1.0), |m| m.sampling.stretch());
+        let floats = match self.params.filter {
+            Sampler::Filter(f) => most_taps(f, s) + most_taps(f, t),
+            Sampler::Impulse => 0,
+        };
+        let weights = match maps.is_some_and(|m| m.exact) {
             true => 0,
-            false => std::mem::size_of::<Weights>(),
+            false => std::mem::size_of::<Weights>() + floats * std::mem::size_of::<f32>(),
         };
         band.width * (2 * (weights + std::mem::size_of::<Option<usize>>()) + 4)
     }
@@ -445,9 +454,10 @@ impl Op for Transform {
         };
         let data = *self.data.lock().expect("not poisoned");
         // An exact map reads the pixels it moves, no taps around them.
+        let (s, t) = maps.sampling.stretch();
         let reach = match maps.exact {
             true => 0.0,
-            false => self.params.filter.reach(),
+            false => self.params.filter.reach(s.max(t)),
         };
         Some(covering(maps.inverse.bounds(out, Some(data)), reach))
     }
@@ -482,6 +492,7 @@ impl Op for Transform {
         let taps = Taps {
             lo: (have.position.x(), have.position.y()),
             hi: (have.end().x(), have.end().y()),
+            stretch: maps.sampling.stretch(),
         };
         // The filter, unless the map is exact or the sampler impulse: then
         // every channel takes its nearest sample, as u32 ones always do.
@@ -497,15 +508,16 @@ impl Op for Transform {
         let filter = filter.filter(|_| filtered.contains(&true));
         let any_nearest = filtered.contains(&false);
         let mut values = vec![0.0f32; columns.len()];
-        let (mut weights, mut nearest) = (Vec::new(), Vec::new());
+        let (mut weights, mut nearest, mut pool) = (Vec::new(), Vec::new(), Vec::new());
         for y in out.valid_rows() {
             weights.clear();
             nearest.clear();
+            pool.clear();
             for c in columns.clone() {
                 let x = out.x + c as i32;
                 if let Some(f) = filter {
                     let (s, t) = maps.sampling.apply(x, y);
-                    weights.push(taps.at(f, s, t));
+                    weights.push(taps.at(f, s, t, &mut pool));
                 }
                 if any_nearest {
                     let (u, v) = inverse.apply(x as f64 + 0.5, y as f64 + 0.5);
@@ -520,7 +532,7 @@ impl Op for Transform {
                     continue;
                 }
                 for (value, w) in values.iter_mut().zip(&weights) {
-                    *value = w.apply(source, input);
+                    *value = w.apply(&pool, source, input);
                 }
                 plane.write_f32(range.clone(), &values);
             }
@@ -657,7 +669,8 @@ mod tests {
             &[
                 ("translate", "2.5,-1.25"),
                 ("rotate", "30"),
-                ("scale", "1.3,0.8"),
+                // Enlarging: shrinking widens the filter past bilinear.
+                ("scale", "1.3,1.2"),
                 ("skew", "0.1,0"),
                 ("center", "10,5"),
                 ("filter", "triangle"),
@@ -672,7 +685,7 @@ mod tests {
         let inverse = |x: f64, y: f64| {
             let (x, y) = (x - 2.5 - cx, (h as f64 - y) + 1.25 - cy);
             let (x, y) = (c * x + s * y, -s * x + c * y);
-            let (x, y) = (x / 1.3, y / 0.8);
+            let (x, y) = (x / 1.3, y / 1.2);
             let x = x - 0.1 * y;
             (x + cx, h as f64 - (y + cy))
         };

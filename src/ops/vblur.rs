@@ -8,6 +8,7 @@ use super::layers::Selection;
 use crate::engine::graph::{Band, Op};
 use crate::engine::plan::Job;
 use crate::engine::prepass::max_over_rows;
+use crate::io::attributes::Edit;
 use crate::io::rows::{Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::{MAX_DISPLACEMENT, VBLUR_SCALE};
@@ -60,10 +61,11 @@ impl Params {
 }
 
 /// The longest streak of the input, where `max_displacement` is not given.
-/// Not in a dry run, which reads no pixels.
-fn measure(args: &Args, job: &Job, dry_run: bool) -> crate::error::Result<Measured> {
+/// Not in a dry run, which reads no pixels, nor for a job file's node,
+/// whose input can be any node (it gives the reach).
+fn measure(args: &Args, job: &Job, _: &[Edit], dry_run: bool) -> crate::error::Result<Measured> {
     let p = Params::read(args).map_err(crate::error::Error::usage)?;
-    if p.max_displacement.is_some() || dry_run {
+    if p.max_displacement.is_some() || dry_run || args.job_file {
         return Ok(Measured::default());
     }
     let names = [p.vectors.0[0].as_str(), p.vectors.0[1].as_str()];

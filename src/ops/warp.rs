@@ -6,7 +6,9 @@
 //! and divided by the sum of all the window's weights. At ties (a point on
 //! the half-pixel grid, a tap on the filter's edge, as at 45°) which side
 //! a tap falls is then oiiotool's, so box and gaussian agree to the bit.
-//! Formulas: specs/ops.md, "transform".
+//! Where the map shrinks, the filter widens by the inverse map's largest
+//! derivative along each axis above 1 (`filtered_sample`'s isotropic
+//! footprint). Formulas: specs/ops.md, "transform".
 
 use super::resize::Filter;
 use crate::io::rows::{Rows, Samples};
@@ -41,26 +43,42 @@ impl SampleMap {
         let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
         (x * a + y * c + e, x * b + y * d + f)
     }
+
+    /// How much the filter widens along s and t: the largest of 1 and the
+    /// map's derivatives of s (of t) by x and y, as `filtered_sample`
+    /// takes them (the derivatives of an affine map are its matrix's).
+    pub fn stretch(&self) -> (f32, f32) {
+        let [a, b, c, d, _, _] = self.0;
+        (
+            1f32.max(a.abs().max(c.abs())),
+            1f32.max(b.abs().max(d.abs())),
+        )
+    }
 }
 
-/// Most taps along one axis (lanczos3's window: seven pixels).
-const MOST_TAPS: usize = 8;
+/// The most taps along one axis of `filter` widened by `stretch`.
+pub fn most_taps(filter: Filter, stretch: f32) -> usize {
+    (filter.width() * stretch).ceil() as usize + 2
+}
 
-/// The source pixels `lo..hi`: held and inside the data.
+/// The source pixels `lo..hi`: held and inside the data; the filter
+/// widened by `stretch` along each axis (`SampleMap::stretch`).
 pub struct Taps {
     pub lo: (i32, i32),
     pub hi: (i32, i32),
+    pub stretch: (f32, f32),
 }
 
-/// One output pixel's taps: the window's first column and row, the weights
-/// along each axis over the whole window, the part of it inside the source
+/// One output pixel's taps: the window's first column and row, where its
+/// weights along each axis over the whole window start in the row's
+/// weights (`nx` of x, then `ny` of y), the part of it inside the source
 /// pixels (`x0..x1`, `y0..y1`, offsets into the window), and the sum of
 /// all the window's 2-D weights.
 pub struct Weights {
     x: i32,
     y: i32,
-    wx: [f32; MOST_TAPS],
-    wy: [f32; MOST_TAPS],
+    at: usize,
+    nx: usize,
     cut: [usize; 4],
     total: f32,
 }
@@ -75,37 +93,37 @@ impl Taps {
             .then(|| rows.row_range(y as i32).start + (x as i32 - rows.x) as usize)
     }
 
-    /// The taps of `filter` at source point (s, t) (pixel coordinates).
-    pub fn at(&self, filter: Filter, s: f32, t: f32) -> Weights {
+    /// The taps of `filter` at source point (s, t) (pixel coordinates),
+    /// their weights pushed to `pool` (a row's).
+    pub fn at(&self, filter: Filter, s: f32, t: f32, pool: &mut Vec<f32>) -> Weights {
         let width = filter.width();
-        let radius = 0.5 * width;
-        // Along one axis: the window, its weights at (p + 0.5) - s, and the
-        // part of it from lo to hi.
-        let axis = |s: f32, lo: i32, hi: i32, out: &mut [f32; MOST_TAPS]| {
+        let at = pool.len();
+        // Along one axis: the window, its weights at (p + 0.5) - s (scaled
+        // by 1 / stretch, the filter's own width kept), and the part of it
+        // from lo to hi.
+        let mut axis = |s: f32, stretch: f32, lo: i32, hi: i32| {
+            let (radius, inverse) = (0.5 * stretch * width, 1.0 / stretch);
             let first = (s - radius).floor() as i32;
-            let n = ((s + radius).ceil() as i32)
-                .saturating_sub(first)
-                .clamp(0, MOST_TAPS as i32);
-            for (i, w) in out.iter_mut().enumerate().take(n as usize) {
-                *w = filter.at((first + i as i32) as f32 + 0.5 - s, width);
-            }
+            let n = ((s + radius).ceil() as i32).saturating_sub(first).max(0);
+            let n = n.min(most_taps(filter, stretch) as i32);
+            pool.extend((0..n).map(|i| filter.at(inverse * ((first + i) as f32 + 0.5 - s), width)));
             let cut = |p: i32| (p.clamp(first, first + n) - first) as usize;
             (first, n as usize, cut(lo), cut(hi))
         };
-        let (mut wx, mut wy) = ([0.0; MOST_TAPS], [0.0; MOST_TAPS]);
-        let (x, nx, x0, x1) = axis(s, self.lo.0, self.hi.0, &mut wx);
-        let (y, ny, y0, y1) = axis(t, self.lo.1, self.hi.1, &mut wy);
+        let (x, nx, x0, x1) = axis(s, self.stretch.0, self.lo.0, self.hi.0);
+        let (y, ny, y0, y1) = axis(t, self.stretch.1, self.lo.1, self.hi.1);
+        let (wx, wy) = pool[at..].split_at(nx);
         let mut total = 0.0f32;
         for &v in &wy[..ny] {
-            for &u in &wx[..nx] {
+            for &u in wx {
                 total += u * v;
             }
         }
         Weights {
             x,
             y,
-            wx,
-            wy,
+            at,
+            nx,
             cut: [x0, x1, y0, y1],
             total,
         }
@@ -114,19 +132,21 @@ impl Taps {
 
 impl Weights {
     /// The weighted sum of `source`'s taps (a plane of `rows`), row by row,
-    /// over the sum of the weights; taps of weight 0 are not read (an
-    /// infinity there would make NaN), those outside the source are black.
-    pub fn apply(&self, source: &Samples, rows: &Rows) -> f32 {
+    /// over the sum of the weights (`pool`: the row's, as `Taps::at` left
+    /// it); taps of weight 0 are not read (an infinity there would make
+    /// NaN), those outside the source are black.
+    pub fn apply(&self, pool: &[f32], source: &Samples, rows: &Rows) -> f32 {
         let [x0, x1, y0, y1] = self.cut;
         if self.total <= 0.0 || x0 == x1 {
             return 0.0;
         }
+        let (wx, wy) = pool[self.at..].split_at(self.nx);
         let mut sum = 0.0f32;
         for j in y0..y1 {
             let start =
                 rows.row_range(self.y + j as i32).start + (self.x + x0 as i32 - rows.x) as usize;
-            let wy = self.wy[j];
-            let weights = self.wx[x0..x1].iter().map(|&u| u * wy);
+            let wy = wy[j];
+            let weights = wx[x0..x1].iter().map(|&u| u * wy);
             match source {
                 Samples::F16(v) => add(&mut sum, weights, &v[start..], |s| s.to_f32()),
                 Samples::F32(v) => add(&mut sum, weights, &v[start..], |s| s),
@@ -182,10 +202,31 @@ mod tests {
         let taps = Taps {
             lo: (0, 0),
             hi: (10, 10),
+            stretch: (1.0, 1.0),
         };
-        let w = taps.at(Filter::Box, 4.0, 4.5);
+        let mut pool = Vec::new();
+        let w = taps.at(Filter::Box, 4.0, 4.5, &mut pool);
         assert_eq!((w.x, w.y), (3, 4));
         assert_eq!(w.total, 2.0);
-        assert_eq!(&w.wx[..2], &[1.0, 1.0]);
+        assert_eq!(&pool[..2], &[1.0, 1.0]);
+    }
+
+    /// Shrinking by 4 along x (the inverse map's derivative 4) widens the
+    /// box to four pixels there, each weighed 1 (at a quarter of their
+    /// distance); y keeps its one pixel of two taps.
+    #[test]
+    fn a_shrinking_map_widens_the_filter() {
+        let map = SampleMap::inverse_of([0.25, 0.0, 0.0, 1.0], (0.0, 0.0), (0.0, 0.0));
+        assert_eq!(map.stretch(), (4.0, 1.0));
+        let taps = Taps {
+            lo: (0, 0),
+            hi: (20, 20),
+            stretch: map.stretch(),
+        };
+        let mut pool = Vec::new();
+        let w = taps.at(Filter::Box, 10.0, 5.3, &mut pool);
+        assert_eq!((w.x, w.y, w.nx), (8, 4, 4));
+        assert_eq!(&pool[..6], &[1.0, 1.0, 1.0, 1.0, 0.0, 1.0]);
+        assert_eq!(w.total, 4.0);
     }
 }

@@ -227,6 +227,14 @@ impl WriteArgs {
 }
 
 impl RunArgs {
+    /// The options of a command line that gives none.
+    pub fn none() -> Self {
+        use clap::FromArgMatches;
+        let command = Self::augment_args(clap::Command::new("run").no_binary_name(true));
+        let matches = command.get_matches_from(std::iter::empty::<String>());
+        Self::from_arg_matches(&matches).expect("no options parse")
+    }
+
     /// The output's block layout these options ask for.
     pub fn blocks(&self) -> crate::engine::plan::OutputBlocks {
         use crate::engine::plan::OutputBlocks;

@@ -43,7 +43,11 @@ impl TimedCommand {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::cli::job_file::load(Path::new(&inputs[0]), None)?;
+            let plan = crate::cli::commands::load_job(
+                Path::new(&inputs[0]),
+                None,
+                &crate::run::settings::RunArgs::none(),
+            )?;
             // The job file, then what it reads.
             inputs.extend(plan.reads.into_iter().map(|(read, _)| read));
             if output.is_none() {

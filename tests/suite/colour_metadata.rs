@@ -13,11 +13,11 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
 
-const V4: &str = "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5";
+pub const V4: &str = "ocio://cg-config-v4.0.0_aces-v2.0_ocio-v2.5";
 const V1: &str = "ocio://cg-config-v1.0.0_aces-v1.3_ocio-v2.1";
 
 /// OpenEXR's Rec. 709 (ITU-R BT.709, D65), as files carry it.
-fn rec709() -> Chromaticities {
+pub fn rec709() -> Chromaticities {
     chromaticities([0.64, 0.33, 0.3, 0.6, 0.15, 0.06, 0.3127, 0.329])
 }
 
@@ -32,7 +32,7 @@ fn chromaticities(v: [f32; 8]) -> Chromaticities {
 }
 
 /// A small RGBA float image, with a `diffuse` layer, at `path` with the colour attributes given.
-fn tagged(path: &Path, chroma: Option<Chromaticities>, interop: Option<&str>) {
+pub fn tagged(path: &Path, chroma: Option<Chromaticities>, interop: Option<&str>) {
     let mut channels = BTreeMap::new();
     let names = ["A", "B", "G", "R", "diffuse.B", "diffuse.G", "diffuse.R"];
     for (c, name) in names.iter().enumerate() {
@@ -50,7 +50,7 @@ fn tagged(path: &Path, chroma: Option<Chromaticities>, interop: Option<&str>) {
     image.write().to_file(path).unwrap();
 }
 
-fn header(path: &Path) -> Header {
+pub fn header(path: &Path) -> Header {
     let meta = exr::meta::MetaData::read_from_file(path, false).unwrap();
     meta.headers.into_iter().next().unwrap()
 }
@@ -155,7 +155,7 @@ fn a_conversion_writes_its_destinations_colour_and_removes_what_is_not_known() {
 }
 
 /// A config of three spaces whose file rules send `*plate*` files to `g22`.
-const RULES: &str = r#"ocio_profile_version: 2
+pub const RULES: &str = r#"ocio_profile_version: 2
 roles:
   default: raw
   scene_linear: lin

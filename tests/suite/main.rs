@@ -8,6 +8,7 @@ mod bench_report;
 mod blur;
 #[cfg(feature = "colour")]
 mod colour;
+mod colour_auto;
 mod colour_metadata;
 mod common;
 mod crop;

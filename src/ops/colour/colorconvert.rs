@@ -24,7 +24,7 @@ pub const COLORCONVERT: Operation = Operation {
             .map(|cs| cs.name().to_string());
         let edits = match to {
             Some(to) => super::metadata::destination(&config, &to),
-            None => super::metadata::written(None),
+            None => super::metadata::written(None, None),
         };
         let map = super::Ocio::new(&processor).writing(edits);
         Ok(super::add(map, p.no_unpremult, args, graph, inputs))

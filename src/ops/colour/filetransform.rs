@@ -20,8 +20,8 @@ pub const FILETRANSFORM: Operation = Operation {
             .into_iter()
             .collect();
         // A file says nothing of the space it ends in.
-        let map =
-            (super::Ocio::new(&processor).warned(warnings)).writing(super::metadata::written(None));
+        let map = (super::Ocio::new(&processor).warned(warnings))
+            .writing(super::metadata::written(None, None));
         Ok(super::add(map, p.no_unpremult, args, graph, inputs))
     },
     ..COLORCONVERT

@@ -11,6 +11,13 @@ use ocio::Config;
 /// OpenEXR's attribute naming a file's colour space by its interop ID.
 pub const INTEROP_ID: &str = "colorInteropID";
 
+/// OpenImageIO's attribute naming a file's colour space (what its readers
+/// of TIFF, PNG and JPEG set, and what oiiotool's conversions write).
+pub const OIIO_COLOUR_SPACE: &str = "oiio:ColorSpace";
+
+/// The DPX and Cineon readers' transfer characteristic (src/io/foreign).
+pub const TRANSFERS: [&str; 2] = ["dpx:Transfer", "cineon:Transfer"];
+
 /// Primaries and white point as published (x, y of red, green, blue,
 /// white), by the name the Color Interop Forum's IDs give them
 /// (`lin_ap1_scene`: transfer, primaries, scene or display).
@@ -84,13 +91,22 @@ pub fn interop_id(config: &Config, space: &str) -> Option<String> {
 
 /// What a conversion writes of its destination `space` of `config`.
 pub fn destination(config: &Config, space: &str) -> Vec<Edit> {
-    written(interop_id(config, space))
+    written(interop_id(config, space), Some(space))
 }
 
-/// What a conversion writes of a destination of interop ID `id` (`None`:
-/// not known, a file transform's): the ID and the primaries it names; what
-/// is not known is removed, never left as the source's.
-pub fn written(id: Option<String>) -> Vec<Edit> {
+/// What a conversion writes of a destination of interop ID `id` and
+/// colour space `space` (`None`: not known, a file transform's): the ID,
+/// the primaries it names and OpenImageIO's `oiio:ColorSpace` (the name);
+/// what is not known is removed, never left as the source's, and so are
+/// a DPX's or Cineon's transfer, which the pixels no longer have.
+pub fn written(id: Option<String>, space: Option<&str>) -> Vec<Edit> {
+    let text = |name: &'static str, value: &str| {
+        Edit::Set(name, Box::new(AttributeValue::Text(Text::from(value))))
+    };
+    let space_edit = match space {
+        Some(space) => text(OIIO_COLOUR_SPACE, space),
+        None => Edit::Remove(OIIO_COLOUR_SPACE),
+    };
     let primaries_edit = match id.as_deref().and_then(primaries) {
         Some(c) => Edit::Set(
             "chromaticities",
@@ -99,13 +115,14 @@ pub fn written(id: Option<String>) -> Vec<Edit> {
         None => Edit::Remove("chromaticities"),
     };
     let id_edit = match id {
-        Some(id) => Edit::Set(
-            INTEROP_ID,
-            Box::new(AttributeValue::Text(Text::from(id.as_str()))),
-        ),
+        Some(id) => text(INTEROP_ID, &id),
         None => Edit::Remove(INTEROP_ID),
     };
-    vec![id_edit, primaries_edit]
+    let transfers = TRANSFERS.iter().map(|&name| Edit::Remove(name));
+    [id_edit, primaries_edit, space_edit]
+        .into_iter()
+        .chain(transfers)
+        .collect()
 }
 
 #[cfg(test)]

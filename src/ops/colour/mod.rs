@@ -49,8 +49,14 @@ fn source(given: Option<&FileName>) -> (String, &'static str) {
 }
 
 /// The colour operations' measure: `--from auto` read from the first frame
-/// of the input (`auto.rs`); nothing for the others.
-pub fn measure(args: &Args, job: &Job, _dry_run: bool) -> crate::error::Result<Measured> {
+/// of the input, `edits` applied to its header (`auto.rs`); nothing for
+/// the others.
+pub fn measure(
+    args: &Args,
+    job: &Job,
+    edits: &[Edit],
+    _dry_run: bool,
+) -> crate::error::Result<Measured> {
     let Some(from) = args.values.get("from") else {
         return Ok(Measured::default());
     };
@@ -59,7 +65,7 @@ pub fn measure(args: &Args, job: &Job, _dry_run: bool) -> crate::error::Result<M
     }
     let given = args.values.get("config").map(|c| FileName(c.clone()));
     let config = config(given.as_ref()).map_err(crate::error::Error::usage)?;
-    auto::measure(&config, &source(given.as_ref()).0, job)
+    auto::measure(&config, &source(given.as_ref()).0, job, edits)
 }
 
 /// A colour space, role or alias as the config spells its canonical name;
@@ -70,10 +76,7 @@ pub fn colour_space(config: &Config, name: &str) -> Result<String, String> {
     }
     if name == auto::AUTO {
         return Err(
-            "'auto' is no colour space: --from auto is the command line's (it reads \
-             the first frame of the command's input, which a job node's input may not \
-             be); name the colour space"
-                .into(),
+            "'auto' is no colour space: --from auto reads the input's (--to names one)".into(),
         );
     }
     let spaces: Vec<String> = (0..config.num_color_spaces())
