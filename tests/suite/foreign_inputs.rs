@@ -666,23 +666,7 @@ fn damaged_files_are_refused_in_one_line_and_nothing_is_written() {
             "truncated Cineon",
         ),
     ];
-    for (name, bytes, says) in cases {
-        let input = dir.path().join(format!("{name}.dpx"));
-        std::fs::write(&input, bytes).unwrap();
-        let output = dir.path().join(format!("{name}.exr"));
-        for args in [
-            vec!["transcode", s(&input), "-o", s(&output)],
-            vec!["info", s(&input)],
-        ] {
-            let out = limited(&args);
-            let said = stderr(&out);
-            assert_eq!(out.status.code(), Some(3), "{name}: {said}");
-            assert!(said.contains(says), "{name}: {said}");
-            assert!(said.contains(s(&input)), "{name} is not named: {said}");
-            assert_eq!(said.trim_end().lines().count(), 1, "{name}: {said}");
-            assert!(!output.exists(), "{name}: an output was written");
-        }
-    }
+    assert_refused(dir.path(), "dpx", cases);
 }
 
 #[test]
@@ -718,4 +702,26 @@ fn memory_stays_flat_in_a_dpx_plates_height() {
         tall < short * 3 / 2,
         "peak grew from {short} to {tall} bytes with 4x the rows"
     );
+}
+
+/// Each damaged file (`name`, its bytes, what the message says) refused by
+/// transcode and info: exit 3, one line naming the file, nothing written.
+pub fn assert_refused(dir: &Path, ext: &str, cases: Vec<(&str, Vec<u8>, &str)>) {
+    for (name, bytes, says) in cases {
+        let input = dir.join(format!("{name}.{ext}"));
+        std::fs::write(&input, bytes).unwrap();
+        let output = dir.join(format!("{name}.exr"));
+        for args in [
+            vec!["transcode", s(&input), "-o", s(&output)],
+            vec!["info", s(&input)],
+        ] {
+            let out = limited(&args);
+            let said = stderr(&out);
+            assert_eq!(out.status.code(), Some(3), "{name}: {said}");
+            assert!(said.contains(says), "{name}: {said}");
+            assert!(said.contains(s(&input)), "{name} is not named: {said}");
+            assert_eq!(said.trim_end().lines().count(), 1, "{name}: {said}");
+            assert!(!output.exists(), "{name}: an output was written");
+        }
+    }
 }

@@ -5,8 +5,8 @@
 //! shared PNGs against oiiotool, a sequence and a job, and damaged files
 //! refused in one line with nothing written.
 
-use crate::common::{limited, read_image, run, s, stderr, Samples};
-use crate::foreign_inputs::{assert_as_oiiotool, foreign_images, transcode};
+use crate::common::{read_image, run, s, stderr, Samples};
+use crate::foreign_inputs::{assert_as_oiiotool, assert_refused, foreign_images, transcode};
 use png::{BitDepth, ColorType};
 use std::path::{Path, PathBuf};
 
@@ -319,21 +319,5 @@ fn damaged_pngs_are_refused_in_one_line_and_nothing_is_written() {
         ("wide", ihdr(1 << 30, 1, 0), "not a readable PNG"),
         ("interlaced", ihdr(300, 200, 1), "interlaced"),
     ];
-    for (name, bytes, says) in cases {
-        let input = dir.path().join(format!("{name}.png"));
-        std::fs::write(&input, bytes).unwrap();
-        let output = dir.path().join(format!("{name}.exr"));
-        for args in [
-            vec!["transcode", s(&input), "-o", s(&output)],
-            vec!["info", s(&input)],
-        ] {
-            let out = limited(&args);
-            let said = stderr(&out);
-            assert_eq!(out.status.code(), Some(3), "{name}: {said}");
-            assert!(said.contains(says), "{name}: {said}");
-            assert!(said.contains(s(&input)), "{name} is not named: {said}");
-            assert_eq!(said.trim_end().lines().count(), 1, "{name}: {said}");
-            assert!(!output.exists(), "{name}: an output was written");
-        }
-    }
+    assert_refused(dir.path(), "png", cases);
 }
