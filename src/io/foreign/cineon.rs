@@ -64,7 +64,7 @@ fn layout(f: &Fields) -> Result<(u64, u64, Vec<&'static str>), String> {
 /// The header's fields that become attributes.
 fn attributes(f: &Fields, film: bool) -> Vec<(&'static str, AttributeValue)> {
     let date = match (f.text(132, 12), f.text(144, 12)) {
-        (Some(d), Some(t)) if d.len() == 10 && t.len() >= 8 => Some(format!("{d} {}", &t[..8])),
+        (Some(d), Some(t)) if d.len() == 10 => t.get(..8).map(|t| format!("{d} {t}")),
         _ => None,
     };
     let mut list = vec![
@@ -72,7 +72,7 @@ fn attributes(f: &Fields, film: bool) -> Vec<(&'static str, AttributeValue)> {
             "cineon:Transfer",
             AttributeValue::Text(Text::from("Printing density")),
         )),
-        date.map(|d| ("capDate", AttributeValue::Text(Text::from(d.as_str())))),
+        date.map(|d| ("capDate", super::utf8(&d))),
         string("cineon:SourceImageFileName", f.text(720, 100)),
         string("cineon:InputDevice", f.text(844, 64)),
     ];

@@ -180,7 +180,14 @@ pub fn frame_rate(rate: f32) -> Option<exr::meta::attribute::Rational> {
 
 /// A string attribute, when the text is set.
 pub fn string(name: &'static str, text: Option<String>) -> Option<(&'static str, AttributeValue)> {
-    text.map(|t| (name, AttributeValue::Text(Text::from(t.as_str()))))
+    text.map(|t| (name, utf8(&t)))
+}
+
+/// A string attribute holding `text`'s UTF-8 bytes, as OpenEXR's strings
+/// do and `--attrib` writes them (exr's `Text::from` panics on a character
+/// beyond Latin-1, which a file's text field may hold).
+pub fn utf8(text: &str) -> AttributeValue {
+    AttributeValue::Text(Text::from_slice_unchecked(text.as_bytes()))
 }
 
 /// Big- or little-endian fields of a header.

@@ -8,7 +8,7 @@
 use super::raw::widened;
 use super::stream::Stream;
 use super::{sorted_components, Foreign, Format, Rows};
-use exr::meta::attribute::{AttributeValue, SampleType, Text};
+use exr::meta::attribute::{AttributeValue, SampleType};
 use png::{BitDepth, Transformations};
 use std::fs::File;
 use std::io::BufReader;
@@ -134,7 +134,7 @@ fn two_digits(g: f32) -> String {
 /// or none, "linear" or "GammaG" from a gAMA chunk), resolution, pixel
 /// aspect and the text chunks of known keywords.
 fn attributes(info: &png::Info) -> (Vec<(String, AttributeValue)>, f32) {
-    let text = |t: &str| AttributeValue::Text(Text::from(t));
+    let text = super::utf8;
     let mut list = Vec::new();
     let gamma = match (&info.srgb, info.gama_chunk) {
         (None, Some(g)) if g.into_scaled() > 0 => {

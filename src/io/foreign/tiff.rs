@@ -122,7 +122,7 @@ fn attributes(d: &mut TiffDecoder) -> Vec<(&'static str, AttributeValue)> {
         if let Ok(Some(tiff::decoder::ifd::Value::Ascii(text))) = d.find_tag(tag) {
             let text = text.trim_end_matches('\0');
             if !text.is_empty() {
-                list.push((name, AttributeValue::Text(Text::from(text))));
+                list.push((name, super::utf8(text)));
             }
         }
     }
