@@ -563,8 +563,17 @@ fn nuke_dpx_and_cineon_files_read_as_oiiotool_reads_them() {
     let Some(root) = foreign_images() else {
         return;
     };
+    shared_files_as_oiiotool(
+        &root,
+        &["dpx/dpx_nuke_10bits_rgb.dpx", "cineon/checker.cin"],
+    );
+}
+
+/// Each of `files` (under the foreign image set `root`) transcoded equals
+/// oiiotool's reading of it, and `info` reads it.
+pub fn shared_files_as_oiiotool(root: &Path, files: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
-    for file in ["dpx/dpx_nuke_10bits_rgb.dpx", "cineon/checker.cin"] {
+    for file in files {
         let input = root.join(file);
         let output = dir
             .path()

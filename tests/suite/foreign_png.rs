@@ -6,7 +6,9 @@
 //! refused in one line with nothing written.
 
 use crate::common::{read_image, run, s, stderr, Samples};
-use crate::foreign_inputs::{assert_as_oiiotool, assert_refused, foreign_images, transcode};
+use crate::foreign_inputs::{
+    assert_as_oiiotool, assert_refused, foreign_images, shared_files_as_oiiotool, transcode,
+};
 use png::{BitDepth, ColorType};
 use std::path::{Path, PathBuf};
 
@@ -221,15 +223,8 @@ fn shared_pngs_read_as_oiiotool_reads_them() {
     let Some(root) = foreign_images() else {
         return;
     };
-    let dir = tempfile::tempdir().unwrap();
-    for file in ["png/oiio-logo-no-alpha.png", "png/oiio-logo-with-alpha.png"] {
-        let input = root.join(file);
-        let output = dir
-            .path()
-            .join(Path::new(file).with_extension("exr").file_name().unwrap());
-        transcode(&input, &output, &[]);
-        assert_as_oiiotool(&input, &output, false);
-    }
+    let files = ["png/oiio-logo-no-alpha.png", "png/oiio-logo-with-alpha.png"];
+    shared_files_as_oiiotool(&root, &files);
 }
 
 #[test]
