@@ -9,5 +9,6 @@ pub mod io;
 pub mod ops;
 pub mod params;
 pub mod run;
+pub mod simd;
 pub mod stage_time;
 pub mod tools;

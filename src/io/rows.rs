@@ -218,9 +218,7 @@ impl Samples {
 /// too: the half crate (and F16C) sets the quiet bit, which would rewrite
 /// a signalling NaN that is only copied (merge's opaque over, a mix of 1).
 fn keep_nan_payloads_up(halves: &[f16], out: &mut [f32]) {
-    // One vectorised pass to look: NaNs are rare, the fix below is scalar.
-    let nan = |h: &f16| h.to_bits() & 0x7fff > 0x7c00;
-    if !halves.iter().fold(false, |any, h| any | nan(h)) {
+    if !any_nan(halves) {
         return;
     }
     for (o, h) in out.iter_mut().zip(halves) {
@@ -231,12 +229,21 @@ fn keep_nan_payloads_up(halves: &[f16], out: &mut [f32]) {
     }
 }
 
+crate::simd::avx2_where_there! {
+    /// Whether a half is NaN, in one pass that vectorises (a max over 16-bit
+    /// lanes): NaNs are rare, and the payload fixes around it are scalar.
+    fn any_nan(halves: &[f16]) -> bool {
+        let magnitudes = halves.iter().map(|h| (h.to_bits() & 0x7fff) as i16);
+        magnitudes.fold(0, i16::max) > 0x7c00
+    }
+}
+
 /// The way back of `keep_nan_payloads_up`: an f32 NaN whose payload fits
 /// in half's keeps it, quiet or signalling (one that does not stays a
 /// quiet NaN, as the half crate makes it).
 fn keep_nan_payloads_down(values: &[f32], out: &mut [f16]) {
-    let nan = |v: &f32| v.to_bits() & 0x7fff_ffff > 0x7f80_0000;
-    if !values.iter().fold(false, |any, v| any | nan(v)) {
+    // The halves are NaN where the values are, and half as many bytes to scan.
+    if !any_nan(out) {
         return;
     }
     for (o, v) in out.iter_mut().zip(values) {

@@ -226,23 +226,14 @@ impl Op for Vertical {
 /// sums 2R + 1 times.
 const LANES: usize = 64;
 
-/// out[i] = the sum of weights[k] * taps[k][i] in f32, from k = 0 up (-R in
-/// the filter's offsets), a multiply then an add per tap: no fused
-/// multiply-add, so the AVX2 build of the same loop gives the same bits as
-/// SSE2, twice as wide.
-fn filter(weights: &[f32], taps: &[&[f32]], out: &mut [f32]) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, checked just above.
-        return unsafe { filter_avx2(weights, taps, out) };
+crate::simd::avx2_where_there! {
+    /// out[i] = the sum of weights[k] * taps[k][i] in f32, from k = 0 up (-R
+    /// in the filter's offsets), a multiply then an add per tap: no fused
+    /// multiply-add, so the AVX2 build of the same loop gives the same bits
+    /// as SSE2, twice as wide.
+    fn filter(weights: &[f32], taps: &[&[f32]], out: &mut [f32]) {
+        filter_lanes(weights, taps, out)
     }
-    filter_lanes(weights, taps, out)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn filter_avx2(weights: &[f32], taps: &[&[f32]], out: &mut [f32]) {
-    filter_lanes(weights, taps, out)
 }
 
 #[inline(always)]

@@ -181,22 +181,24 @@ impl Value for MergeOp {
 /// and `x` exactly (a NaN's payload too) where it is 1.
 #[inline(always)]
 fn times(w: f32, x: f32) -> f32 {
+    // Computed, then chosen: selects, so that rows vectorise.
+    let r = w * x;
+    let r = if w == 1.0 { x } else { r };
     if w == 0.0 {
         0.0
-    } else if w == 1.0 {
-        x
     } else {
-        w * x
+        r
     }
 }
 
 /// `x + w · y`, exactly `x` (its bits: −0, a NaN's payload) where `w` is 0.
 #[inline(always)]
 fn plus(x: f32, w: f32, y: f32) -> f32 {
+    let r = x + w * y;
     if w == 0.0 {
         x
     } else {
-        x + w * y
+        r
     }
 }
 
@@ -210,6 +212,7 @@ enum Bounds {
 
 impl MergeOp {
     /// Colour from premultiplied colours `a`, `b` and alphas `aa`, `ab`.
+    #[inline(always)]
     pub fn colour(self, a: f32, aa: f32, b: f32, ab: f32) -> f32 {
         use MergeOp::*;
         match self {
@@ -239,6 +242,7 @@ impl MergeOp {
 
     /// Result alpha: the colour formula applied to the alphas (which is the
     /// Porter-Duff alpha for the compositing operators).
+    #[inline(always)]
     pub fn alpha(self, aa: f32, ab: f32) -> f32 {
         use MergeOp::*;
         match self {
@@ -246,28 +250,6 @@ impl MergeOp {
             Atop => ab,
             _ => self.colour(aa, aa, ab, ab),
         }
-    }
-
-    /// `colour` over a row, premultiplied and unmixed, into `a`; with
-    /// `keep_b`, B exactly where A is transparent black.
-    fn colour_row(self, a: &mut [f32], aa: &[f32], b: &[f32], ab: &[f32], keep_b: bool) {
-        by_operator!(self, OP => {
-            for x in 0..a.len() {
-                let r = OP.colour(a[x], aa[x], b[x], ab[x]);
-                a[x] = if keep_b && aa[x] == 0.0 && a[x] == 0.0 { b[x] } else { r };
-            }
-        })
-    }
-
-    /// `alpha` over a row, unmixed, into `ar`; with `keep_b`, B's where A's
-    /// is 0.
-    fn alpha_row(self, aa: &[f32], ab: &[f32], ar: &mut [f32], keep_b: bool) {
-        by_operator!(self, OP => {
-            for x in 0..ar.len() {
-                let r = OP.alpha(aa[x], ab[x]);
-                ar[x] = if keep_b && aa[x] == 0.0 { ab[x] } else { r };
-            }
-        })
     }
 
     /// Whether a transparent black A (colour and alpha 0) leaves B as it is.
@@ -284,6 +266,52 @@ impl MergeOp {
             Atop | Stencil => Bounds::B,
             _ => Bounds::Union,
         }
+    }
+}
+
+crate::simd::avx2_where_there! {
+    /// `colour` over a row, premultiplied and unmixed, into `a`; with
+    /// `keep_b`, B exactly where A is transparent black. One loop per
+    /// operator and per `keep_b`, free of branches: it vectorises.
+    fn colour_row(op: MergeOp, a: &mut [f32], aa: &[f32], b: &[f32], ab: &[f32], keep_b: bool) {
+        #[inline(always)]
+        fn row<const KEEP_B: bool>(op: MergeOp, a: &mut [f32], aa: &[f32], b: &[f32], ab: &[f32]) {
+            let (aa, b, ab) = (&aa[..a.len()], &b[..a.len()], &ab[..a.len()]);
+            for x in 0..a.len() {
+                let r = op.colour(a[x], aa[x], b[x], ab[x]);
+                let keep = KEEP_B & (aa[x] == 0.0) & (a[x] == 0.0);
+                a[x] = if keep { b[x] } else { r };
+            }
+        }
+        by_operator!(op, OP => {
+            if keep_b {
+                row::<true>(OP, a, aa, b, ab)
+            } else {
+                row::<false>(OP, a, aa, b, ab)
+            }
+        })
+    }
+}
+
+crate::simd::avx2_where_there! {
+    /// `alpha` over a row, unmixed, into `ar`; with `keep_b`, B's where A's
+    /// is 0.
+    fn alpha_row(op: MergeOp, aa: &[f32], ab: &[f32], ar: &mut [f32], keep_b: bool) {
+        #[inline(always)]
+        fn row<const KEEP_B: bool>(op: MergeOp, aa: &[f32], ab: &[f32], ar: &mut [f32]) {
+            let (aa, ab) = (&aa[..ar.len()], &ab[..ar.len()]);
+            for x in 0..ar.len() {
+                let r = op.alpha(aa[x], ab[x]);
+                ar[x] = if KEEP_B & (aa[x] == 0.0) { ab[x] } else { r };
+            }
+        }
+        by_operator!(op, OP => {
+            if keep_b {
+                row::<true>(OP, aa, ab, ar)
+            } else {
+                row::<false>(OP, aa, ab, ar)
+            }
+        })
     }
 }
 
@@ -465,7 +493,7 @@ impl Op for Merge {
             for (layer, (aa, ab, ar)) in layers.iter().zip(alphas.iter_mut()) {
                 layer.read_alpha(a, y, span.start, &mut aa[..n]);
                 layer.read_alpha(b, y, span.start, &mut ab[..n]);
-                self.op.alpha_row(&aa[..n], &ab[..n], &mut ar[..n], keep_b);
+                alpha_row(self.op, &aa[..n], &ab[..n], &mut ar[..n], keep_b);
                 if self.mix != 1.0 {
                     for x in (0..n).filter(|&x| !(keep_b && aa[x] == 0.0)) {
                         ar[x] = blend(ar[x], ab[x], self.mix);
@@ -486,8 +514,7 @@ impl Op for Merge {
                                 ca[x] = self.colour(ca[x], aa[x], cb[x], ab[x], ar[x]);
                             }
                         } else {
-                            self.op
-                                .colour_row(&mut ca[..n], &aa[..n], &cb[..n], &ab[..n], keep_b);
+                            colour_row(self.op, &mut ca[..n], &aa[..n], &cb[..n], &ab[..n], keep_b);
                         }
                         out.planes[c].write_f32(dst.clone(), &ca[..n]);
                     }
