@@ -4,7 +4,7 @@
 use crate::cli::job_file::{JobFileContents, Reaching};
 use crate::cli::{Command, Invocation};
 use crate::engine::graph::{Graph, GraphBuilder};
-use crate::engine::plan::Job;
+use crate::engine::plan::{FirstFile, Job};
 use crate::error::{Error, Result};
 use crate::io::media::Format;
 use crate::io::overwrite::refuse_overwriting;
@@ -14,7 +14,7 @@ use crate::ops::layers::Selection;
 use crate::ops::sources::plate::Plate;
 use crate::run::report::Summary;
 use crate::run::settings::{LayerArgs, RunArgs};
-use crate::run::{check_frame_count, frame_list, input_job, plate_job, run_job, DryRun};
+use crate::run::{check_frame_count, frame_list, input_job, plate_job, run_job, DryRun, JobInputs};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -44,8 +44,14 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
         } => {
             let graph = Graph::identity();
             let layers = LayerArgs::default();
-            let (mut job, summary) =
-                input_job(&inputs[..1], &[], &output, graph, 0, &layers, &run)?;
+            let (mut job, summary) = input_job(
+                JobInputs::of(&inputs[..1]),
+                &output,
+                graph,
+                0,
+                &layers,
+                &run,
+            )?;
             job.merged[0] = inputs[1..]
                 .iter()
                 .map(|p| FramePattern::parse(p))
@@ -106,7 +112,7 @@ fn stitch(bands: &[PathBuf], output: &Path) -> Result<()> {
 
 /// A job file's job, the command line's settings over its write node's.
 fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<DryRun>> {
-    let mut contents = load_job(path, output.as_deref(), &run)?;
+    let (mut contents, opened) = load_job(path, output.as_deref(), &run)?;
     if let Some(output) = output {
         contents.output = output;
     }
@@ -116,9 +122,13 @@ fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<
         ..run
     };
     let (texts, parts): (Vec<String>, Vec<Option<String>>) = contents.reads.into_iter().unzip();
+    let given = JobInputs {
+        texts: &texts,
+        read_parts: &parts,
+        opened: &opened,
+    };
     let (job, summary) = input_job(
-        &texts,
-        &parts,
+        given,
         &contents.output,
         contents.graph,
         contents.header_from,
@@ -130,8 +140,13 @@ fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<
 
 /// A job file's contents, its nodes' measured parameters (`from = "auto"`)
 /// read from the files as the command line's are, once per read (`output`
-/// and `run`: the command line's, over the job's).
-pub fn load_job(path: &Path, output: Option<&str>, run: &RunArgs) -> Result<JobFileContents> {
+/// and `run`: the command line's, over the job's); and the first files the
+/// measuring opened, for the job to take over.
+pub fn load_job(
+    path: &Path,
+    output: Option<&str>,
+    run: &RunArgs,
+) -> Result<(JobFileContents, Vec<Option<FirstFile>>)> {
     let jobs: RefCell<HashMap<String, Job>> = RefCell::default();
     let measure = |op: &'static Operation, args: &Args, at: &Reaching| -> Result<Measured> {
         let Some(measure) = op.measure else {
@@ -146,7 +161,12 @@ pub fn load_job(path: &Path, output: Option<&str>, run: &RunArgs) -> Result<JobF
             let output = output.unwrap_or(&at.output);
             let (texts, parts) = ([at.read.clone()], [at.part.clone()]);
             let layers = LayerArgs::default();
-            let (job, _) = input_job(&texts, &parts, output, Graph::identity(), 0, &layers, &run)?;
+            let given = JobInputs {
+                texts: &texts,
+                read_parts: &parts,
+                opened: &[],
+            };
+            let (job, _) = input_job(given, output, Graph::identity(), 0, &layers, &run)?;
             jobs.borrow_mut().insert(key.clone(), job);
         }
         let measured = measure(args, &jobs.borrow()[&key], &at.edits, run.dry_run)
@@ -156,7 +176,9 @@ pub fn load_job(path: &Path, output: Option<&str>, run: &RunArgs) -> Result<JobF
         }
         Ok(measured)
     };
-    crate::cli::job_file::load(path, run.proxy_scale, &measure)
+    let contents = crate::cli::job_file::load(path, run.proxy_scale, &measure)?;
+    let opened = jobs.take().into_values().flat_map(|job| job.first_files);
+    Ok((contents, opened.collect()))
 }
 
 /// `input` written again as `output` (`label`: flatten, transcode).
@@ -167,7 +189,14 @@ fn copy(
     layers: &LayerArgs,
     run: &RunArgs,
 ) -> Result<Option<DryRun>> {
-    let (job, summary) = input_job(&[input], &[], output, Graph::identity(), 0, layers, run)?;
+    let (job, summary) = input_job(
+        JobInputs::of(&[input]),
+        output,
+        Graph::identity(),
+        0,
+        layers,
+        run,
+    )?;
     run_job(&job, label, run, summary)
 }
 
@@ -205,19 +234,12 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
         job_file: false,
     };
     let header = op.header.unwrap_or(call.inputs.len() - 1);
-    let job = |inputs: &[String], graph, header| {
-        input_job(
-            inputs,
-            &[],
-            &call.output,
-            graph,
-            header,
-            &call.layers,
-            &call.run,
-        )
+    let job = |given: JobInputs, graph, header| {
+        input_job(given, &call.output, graph, header, &call.layers, &call.run)
     };
+    let mut opened = Vec::new();
     if let Some(measure) = op.measure {
-        let (first, _) = job(&call.inputs[..1], Graph::identity(), 0)?;
+        let (first, _) = job(JobInputs::of(&call.inputs[..1]), Graph::identity(), 0)?;
         let measured = measure(&args, &first, &[], call.run.dry_run)?;
         if call.run.dry_run && !call.run.quiet {
             measured
@@ -226,6 +248,7 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
                 .for_each(|n| eprintln!("{}: {n}", op.name));
         }
         args.values.extend(measured.values);
+        opened = first.first_files;
     }
     if let Some(factor) = call.run.proxy_scale {
         op.scale_lengths(&mut args, factor as f64)
@@ -233,6 +256,10 @@ fn operation(call: Invocation) -> Result<Option<DryRun>> {
     }
     let (mut graph, inputs) = GraphBuilder::with_inputs(call.inputs.len());
     (op.build)(&args, &mut graph, &inputs).map_err(Error::usage)?;
-    let (job, summary) = job(&call.inputs, graph.finish(), header)?;
+    let given = JobInputs {
+        opened: &opened,
+        ..JobInputs::of(&call.inputs)
+    };
+    let (job, summary) = job(given, graph.finish(), header)?;
     run_job(&job, op.name, &call.run, summary)
 }

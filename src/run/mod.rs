@@ -96,12 +96,29 @@ pub fn frame_list(run: &RunArgs) -> Result<Option<Vec<i64>>> {
     }))
 }
 
-/// A job over input sequences (`file.exr:PART` picks a part, else a job
-/// file's read's own `part` key in `read_parts`, else `--part`); the header
-/// comes from input `header_from`.
+/// A job's inputs as given: sequences (`file.exr:PART` picks a part, else a
+/// job file's read's own `part` key, else `--part`), and first files that a
+/// measuring job (`Operation::measure`) already opened, taken over rather
+/// than opened again.
+#[derive(Clone, Copy, Default)]
+pub struct JobInputs<'a> {
+    pub texts: &'a [String],
+    pub read_parts: &'a [Option<String>],
+    pub opened: &'a [Option<FirstFile>],
+}
+
+impl<'a> JobInputs<'a> {
+    pub fn of(texts: &'a [String]) -> Self {
+        JobInputs {
+            texts,
+            ..JobInputs::default()
+        }
+    }
+}
+
+/// A job over input sequences; the header comes from input `header_from`.
 pub fn input_job(
-    texts: &[String],
-    read_parts: &[Option<String>],
+    given: JobInputs,
     output: &str,
     graph: Graph,
     header_from: usize,
@@ -119,6 +136,7 @@ pub fn input_job(
     let mut inputs = Vec::new();
     let mut parts = Vec::new();
     let mut times = Vec::new();
+    let texts = given.texts;
     for (i, text) in texts.iter().enumerate() {
         let (rest, time) = split_time(text)?;
         let (path, part) = split_part(rest);
@@ -127,7 +145,7 @@ pub fn input_job(
         inputs.push(pattern);
         parts.push(
             part.map(str::to_string)
-                .or_else(|| read_parts.get(i).cloned().flatten())
+                .or_else(|| given.read_parts.get(i).cloned().flatten())
                 .or_else(|| layers.part.part.clone()),
         );
     }
@@ -154,7 +172,7 @@ pub fn input_job(
     }
     let media = review(&output, run)?;
     let resolved = resolve(&inputs, &times, &frames, run.missing)?;
-    let first = first_files(&inputs, &output, &resolved.frames);
+    let first = first_files(&inputs, &output, &resolved.frames, given.opened);
     let luminance = luminance_inputs(&first, &parts, layers, run.write.all_parts, &graph);
     let graph = luminance_chroma::colour_inputs(graph, &luminance, layers.view.as_deref());
     let reads = Job {
@@ -209,11 +227,12 @@ fn check_all_parts(texts: &[String], parts: &[Option<String>], layers: &LayerArg
 /// what is read of it before the run (the luminance weights, the
 /// assumptions' warnings) and by the plan of the frame reading it. None
 /// where it cannot be read (that plan opens it again and reports why) or
-/// every frame is black.
+/// every frame is black. One already in `opened` is not opened again.
 fn first_files(
     inputs: &[FramePattern],
     output: &FramePattern,
     frames: &[FrameSources],
+    opened: &[Option<FirstFile>],
 ) -> Vec<Option<FirstFile>> {
     (0..inputs.len())
         .map(|i| {
@@ -221,13 +240,12 @@ fn first_files(
                 Source::Frame(read) => Some((f.frame, read)),
                 Source::Black(_) => None,
             })?;
-            let label = frame_label(output, inputs, read);
-            let file = ExrFile::open(&inputs[i].path(read), label).ok()?;
-            Some(FirstFile {
-                frame,
-                read,
-                file: Arc::new(file),
-            })
+            let path = inputs[i].path(read);
+            let file = match opened.iter().flatten().find(|f| f.file.path == path) {
+                Some(first) => first.file.clone(),
+                None => Arc::new(ExrFile::open(&path, frame_label(output, inputs, read)).ok()?),
+            };
+            Some(FirstFile { frame, read, file })
         })
         .collect()
 }

@@ -43,7 +43,7 @@ impl TimedCommand {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let plan = crate::cli::commands::load_job(
+            let (plan, _) = crate::cli::commands::load_job(
                 Path::new(&inputs[0]),
                 None,
                 &crate::run::settings::RunArgs::none(),

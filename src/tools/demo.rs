@@ -10,7 +10,7 @@ use crate::ops::sources::plate::{PixelType, Plate, PlateKind};
 use crate::ops::{defocus, diffrender, merge, vblur};
 use crate::run::report::{count, Summary};
 use crate::run::settings::{LayerArgs, RunArgs};
-use crate::run::{add, input_job, plate_job, run_job, run_with_progress};
+use crate::run::{add, input_job, plate_job, run_job, run_with_progress, JobInputs};
 use std::path::Path;
 
 /// The defocus's focus depth: the `Set`'s row at 47% of its height (its
@@ -148,8 +148,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
             _ => effects.defocus(&mut graph, nodes[0])?,
         };
         let (job, summary) = input_job(
-            &[pattern(input)],
-            &[],
+            JobInputs::of(&[pattern(input)]),
             &pattern(output),
             graph.finish(),
             0,
@@ -170,8 +169,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     let (mut graph, nodes) = GraphBuilder::with_inputs(shot.len());
     add(&mut graph, &diffrender::DIFFRENDER, &[], &nodes)?;
     let (job, summary) = input_job(
-        &shot,
-        &[],
+        JobInputs::of(&shot),
         &pattern("diffrender"),
         graph.finish(),
         3,
@@ -195,8 +193,7 @@ pub fn demo(dir: &Path, length: usize, width: usize, height: usize, run: &RunArg
     let defocused = effects.defocus(&mut graph, nodes[1])?;
     add(&mut graph, &merge::OVER, &[], &[moving, defocused])?;
     let (job, summary) = input_job(
-        &inputs,
-        &[],
+        JobInputs::of(&inputs),
         &pattern("comp"),
         graph.finish(),
         1,
@@ -310,8 +307,7 @@ struct Effects {
 impl Effects {
     fn measure(ball: &str, height: usize, run: &RunArgs) -> Result<Self> {
         let (job, _) = input_job(
-            &[ball.to_string()],
-            &[],
+            JobInputs::of(&[ball.to_string()]),
             ball,
             Graph::identity(),
             0,

@@ -105,4 +105,29 @@ fn each_input_frame_is_opened_once_a_run() {
         "-q",
     ];
     assert_eq!(opens(d, &blur, &["parts.exr"]), [1]);
+
+    // An operation that measures its input first (--from auto) plans from
+    // the file its measuring opened; a job file's node likewise.
+    let cg = d.join("cg.exr");
+    crate::colour_metadata::tagged(&cg, None, Some("lin_ap1_scene"));
+    let (aces, config) = (d.join("aces.exr"), crate::colour_metadata::V4);
+    let to_aces = ["--from", "auto", "--to", "ACES2065-1", "--config", config];
+    let auto = [
+        &["colorconvert", s(&cg), "-o", s(&aces), "-q"],
+        &to_aces[..],
+    ]
+    .concat();
+    assert_eq!(opens(d, &auto, &["cg.exr"]), [1]);
+    let job = d.join("auto.toml");
+    std::fs::write(
+        &job,
+        format!(
+            "[[node]]\nname = \"in\"\nread = \"cg.exr\"\n\n\
+             [[node]]\nname = \"cc\"\nop = \"colorconvert\"\ninputs = [\"in\"]\n\
+             from = \"auto\"\nto = \"ACES2065-1\"\nconfig = \"{config}\"\n\n\
+             [[node]]\nname = \"out\"\nwrite = \"aces2.exr\"\ninputs = [\"cc\"]\n"
+        ),
+    )
+    .unwrap();
+    assert_eq!(opens(d, &["run", s(&job), "-q"], &["cg.exr"]), [1]);
 }
