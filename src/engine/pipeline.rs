@@ -597,21 +597,36 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
                     .iter()
                     .any(|c| c.name.to_string() == "A");
                 let alpha = review.media.keeps_alpha(alpha);
-                let strips = || match next()? {
+                let mut strips = || match next()? {
                     Some(Encoded::Media(strip)) => Ok(Some(strip)),
                     Some(Encoded::Chunks(_)) => Err(Error::internal("chunks for a review frame")),
                     None => Ok(None),
                 };
                 let note = (fingerprint::ATTRIBUTE, plan.fingerprint.as_str());
-                media::write_frame(
-                    &plan.output,
-                    plan.label,
-                    &review.media,
-                    size,
-                    alpha,
-                    note,
-                    strips,
-                )
+                match review.media.format {
+                    media::Format::Dpx => crate::io::dpx_out::write_frame(
+                        &plan.output,
+                        plan.label,
+                        review.media.dpx_depth(),
+                        &plan.header,
+                        alpha,
+                        note,
+                        || match strips()?.map(|strip| strip.samples) {
+                            Some(media::Samples::Packed(bytes)) => Ok(Some(bytes)),
+                            Some(_) => Err(Error::internal("unpacked rows for a DPX frame")),
+                            None => Ok(None),
+                        },
+                    ),
+                    _ => media::write_frame(
+                        &plan.output,
+                        plan.label,
+                        &review.media,
+                        size,
+                        alpha,
+                        note,
+                        strips,
+                    ),
+                }
             }
             None => {
                 let chunks = || match next()? {

@@ -22,6 +22,9 @@ pub enum Format {
     Png,
     Jpeg,
     Tiff,
+    /// DPX for DI and editorial deliveries (`dpx_out`): code values as
+    /// they are, not review frames, but written by the same path.
+    Dpx,
 }
 
 impl Format {
@@ -36,6 +39,7 @@ impl Format {
             (".jpeg", Format::Jpeg),
             (".tif", Format::Tiff),
             (".tiff", Format::Tiff),
+            (".dpx", Format::Dpx),
         ]
         .into_iter()
         .find(|(end, _)| name.ends_with(end))
@@ -48,6 +52,7 @@ impl Format {
             Format::Png => "PNG",
             Format::Jpeg => "JPEG",
             Format::Tiff => "TIFF",
+            Format::Dpx => "DPX",
         }
     }
 }
@@ -57,6 +62,9 @@ impl Format {
 pub enum Bits {
     #[value(name = "8")]
     Eight,
+    /// 10-bit (DPX, filled method A).
+    #[value(name = "10")]
+    Ten,
     #[value(name = "16")]
     Sixteen,
     /// 32-bit float (TIFF): scene-linear values as they are.
@@ -96,9 +104,23 @@ impl Media {
         quality: Option<u8>,
         transfer: Option<Transfer>,
     ) -> std::result::Result<Media, String> {
-        let bits = bits.unwrap_or(Bits::Eight);
+        let bits = bits.unwrap_or(match format {
+            Format::Dpx => Bits::Ten,
+            _ => Bits::Eight,
+        });
         match (format, bits) {
             (Format::Exr, _) => Err("EXR output keeps its pixel types".to_string()),
+            (Format::Dpx, Bits::Eight | Bits::Float) => {
+                Err("DPX output takes 10 bits (the default) or 16".to_string())
+            }
+            (Format::Dpx, _) if transfer.is_some() => Err(
+                "--transfer applies to review media: DPX output writes the values as they are \
+                 (convert them first, e.g. colorconvert to ADX10)"
+                    .to_string(),
+            ),
+            (_, Bits::Ten) if format != Format::Dpx => {
+                Err(format!("{} output does not take 10 bits", format.name()))
+            }
             (Format::Jpeg, Bits::Sixteen | Bits::Float) | (Format::Png, Bits::Float) => {
                 Err(format!(
                     "{} output takes 8 bits{}",
@@ -127,6 +149,14 @@ impl Media {
         }
     }
 
+    /// A DPX frame's bits per sample.
+    pub fn dpx_depth(&self) -> super::dpx_out::Depth {
+        match self.bits {
+            Bits::Sixteen => super::dpx_out::Depth::Sixteen,
+            _ => super::dpx_out::Depth::Ten,
+        }
+    }
+
     /// Why a frame of `width` x `height` pixels cannot be written, if it
     /// cannot: JPEG's sizes are 16-bit, but libjpeg (oiiotool, Pillow and
     /// most readers) refuses a side over its JPEG_MAX_DIMENSION, 65500.
@@ -150,6 +180,12 @@ impl Media {
     /// window is `window`, interleaved R, G, B (, A) a pixel; `label`, a
     /// burn-in drawn over them.
     pub fn convert(&self, rows: &Rows, window: IntegerBounds, label: Option<&Label>) -> Strip {
+        if self.format == Format::Dpx {
+            return Strip {
+                rows: rows.height,
+                samples: Samples::Packed(super::dpx_out::convert(rows, self.dpx_depth())),
+            };
+        }
         let samples = match self.bits {
             Bits::Eight => {
                 Samples::U8(
@@ -167,7 +203,7 @@ impl Media {
                     }),
                 )
             }
-            Bits::Sixteen => {
+            Bits::Sixteen | Bits::Ten => {
                 Samples::U16(
                     self.code_values(rows, window, label, u16::MAX, |v, colour, _, _| {
                         (self.encode(v, colour) * 65535.0 + 0.5) as u16
@@ -282,6 +318,8 @@ pub enum Samples {
     U8(Vec<u8>),
     U16(Vec<u16>),
     F32(Vec<f32>),
+    /// Rows as the file stores them (DPX's packed words).
+    Packed(Vec<u8>),
 }
 
 /// A strip of converted rows.
@@ -310,7 +348,7 @@ pub fn write_frame(
         Format::Png => write_png(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Jpeg => write_jpeg(out, media.quality, size, note, &mut next, &fail),
         Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
-        Format::Exr => Err(Error::internal("an EXR frame written as review media")),
+        Format::Exr | Format::Dpx => Err(Error::internal("an EXR or DPX frame as review media")),
     })
 }
 
@@ -369,7 +407,9 @@ fn write_png(
                 let bytes: Vec<u8> = samples.iter().flat_map(|s| s.to_be_bytes()).collect();
                 stream.write_all(&bytes)
             }
-            Samples::F32(_) => return Err(Error::internal("float samples for a PNG")),
+            Samples::F32(_) | Samples::Packed(_) => {
+                return Err(Error::internal("float or packed samples for a PNG"))
+            }
         }
         .map_err(|e| fail(&e))?;
     }
@@ -543,7 +583,7 @@ fn write_tiff(
                 }
             })
         }
-        Bits::Sixteen => {
+        Bits::Sixteen | Bits::Ten => {
             tiff_image::<colortype::RGB16, _>(&mut encoder, size, alpha, note, next, fail, |s| {
                 match s {
                     Samples::U16(v) => Some(v),
@@ -648,6 +688,7 @@ pub fn complete(path: &Path, format: Format) -> bool {
             .is_ok(),
         Format::Jpeg => std::fs::read(path)
             .is_ok_and(|b| b.starts_with(&[0xff, 0xd8]) && b.ends_with(&[0xff, 0xd9])),
+        Format::Dpx => super::dpx_out::complete(path),
         Format::Exr => false,
     }
 }
@@ -655,6 +696,9 @@ pub fn complete(path: &Path, format: Format) -> bool {
 /// The text a review frame written by `write_frame` records under `key`,
 /// if it is there.
 pub fn note(path: &Path, format: Format, key: &str) -> Option<String> {
+    if format == Format::Dpx {
+        return super::dpx_out::note(path, key);
+    }
     let file = super::reader::open_regular(path).ok()?;
     let reader = std::io::BufReader::new(file);
     let prefix = format!("{key}=");
@@ -677,7 +721,7 @@ pub fn note(path: &Path, format: Format, key: &str) -> Option<String> {
             )
         }
         Format::Jpeg => jpeg_comments(reader).into_iter().find_map(from),
-        Format::Exr => None,
+        Format::Exr | Format::Dpx => None,
     }
 }
 

@@ -7,6 +7,7 @@ pub mod b44;
 pub mod burn_in;
 pub mod deep;
 pub mod deflate;
+pub mod dpx_out;
 pub mod foreign;
 pub mod header_text;
 pub mod limits;

@@ -459,7 +459,8 @@ fn slate_job(job: &Job, plans: Option<&Vec<FramePlan>>) -> Result<Option<Job>> {
     }))
 }
 
-/// How `output` is written when it names review media (PNG, JPEG, TIFF),
+/// How `output` is written when it names review media (PNG, JPEG, TIFF) or
+/// DPX,
 /// from `run`'s options; options that do not apply to its format, and
 /// EXR-only ways of writing, are refused.
 fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
@@ -477,7 +478,7 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
     if format == Format::Exr {
         return match given.first() {
             Some(name) => Err(Error::usage(format!(
-                "{name} applies to review media outputs (.png, .jpg, .tif), not {}",
+                "{name} applies to review media and DPX outputs (.png, .jpg, .tif, .dpx), not {}",
                 output.display()
             ))),
             None => Ok(None),
@@ -503,6 +504,12 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         run.write.transfer,
     )
     .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
+    if format == Format::Dpx && run.write.burn_in.is_some() {
+        return Err(Error::usage(format!(
+            "--burn-in applies to review media outputs (.png, .jpg, .tif), not {}",
+            output.display()
+        )));
+    }
     let burn_in = run
         .write
         .burn_in

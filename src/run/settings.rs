@@ -10,7 +10,7 @@ use clap::Args;
 pub const FRAMES: &str = "Frames and sequences";
 pub const LAYERS: &str = "Layers, views and parts";
 pub const OUTPUT: &str = "Output";
-pub const MEDIA: &str = "Review media (.png, .jpg, .tif outputs)";
+pub const MEDIA: &str = "Review media and DPX (.png, .jpg, .tif, .dpx outputs)";
 pub const RUN_CONTROL: &str = "Run control";
 
 /// Which layers, views and parts an operation works on.
@@ -166,7 +166,7 @@ pub struct WriteArgs {
     #[arg(help_heading = MEDIA, long, allow_negative_numbers = true, value_parser = clap::value_parser!(u8).range(1..=100))]
     pub quality: Option<u8>,
     /// Bits per sample: PNG 8 or 16, TIFF 8, 16 or float (scene-linear, as
-    /// it is); JPEG 8 (default 8).
+    /// it is); JPEG 8 (default 8); DPX 10 (default) or 16.
     #[arg(help_heading = MEDIA, long, value_enum)]
     pub bits: Option<crate::io::media::Bits>,
     /// What turns linear pixels into 8 or 16-bit code values: srgb (the sRGB

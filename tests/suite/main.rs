@@ -16,6 +16,7 @@ mod damaged_corpus;
 mod deep;
 mod depth_and_motion;
 mod diffrender_and_zmerge;
+mod dpx_output;
 mod farm;
 mod first_run;
 mod foreign_inputs;
