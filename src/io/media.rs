@@ -22,6 +22,8 @@ pub enum Format {
     Png,
     Jpeg,
     Tiff,
+    /// A review movie (.mov, .mp4), written by `movie.rs`.
+    Movie,
 }
 
 impl Format {
@@ -36,6 +38,8 @@ impl Format {
             (".jpeg", Format::Jpeg),
             (".tif", Format::Tiff),
             (".tiff", Format::Tiff),
+            (".mov", Format::Movie),
+            (".mp4", Format::Movie),
         ]
         .into_iter()
         .find(|(end, _)| name.ends_with(end))
@@ -48,6 +52,7 @@ impl Format {
             Format::Png => "PNG",
             Format::Jpeg => "JPEG",
             Format::Tiff => "TIFF",
+            Format::Movie => "movie",
         }
     }
 }
@@ -86,6 +91,8 @@ pub struct Media {
     pub bits: Bits,
     pub quality: u8,
     pub transfer: Transfer,
+    /// A movie's codec carries alpha (`Format::Movie`: ProRes 4444).
+    pub movie_alpha: bool,
 }
 
 impl Media {
@@ -123,6 +130,7 @@ impl Media {
                 bits,
                 quality: quality.unwrap_or(DEFAULT_QUALITY),
                 transfer: transfer.unwrap_or(Transfer::Srgb),
+                movie_alpha: false,
             }),
         }
     }
@@ -141,9 +149,15 @@ impl Media {
 
     /// Whether frames keep an alpha channel: PNG and TIFF do when the image
     /// has one; JPEG has none and is written as the image over black (its
-    /// premultiplied colour, as oiiotool writes it).
+    /// premultiplied colour, as oiiotool writes it), nor do movies but
+    /// ProRes 4444.
     pub fn keeps_alpha(&self, has_alpha: bool) -> bool {
-        has_alpha && self.format != Format::Jpeg
+        has_alpha
+            && match self.format {
+                Format::Jpeg => false,
+                Format::Movie => self.movie_alpha,
+                _ => true,
+            }
     }
 
     /// The display code values of `rows`, a strip of the image whose data
@@ -310,7 +324,7 @@ pub fn write_frame(
         Format::Png => write_png(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Jpeg => write_jpeg(out, media.quality, size, note, &mut next, &fail),
         Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
-        Format::Exr => Err(Error::internal("an EXR frame written as review media")),
+        Format::Exr | Format::Movie => Err(Error::internal("a review frame of another format")),
     })
 }
 
@@ -648,7 +662,7 @@ pub fn complete(path: &Path, format: Format) -> bool {
             .is_ok(),
         Format::Jpeg => std::fs::read(path)
             .is_ok_and(|b| b.starts_with(&[0xff, 0xd8]) && b.ends_with(&[0xff, 0xd9])),
-        Format::Exr => false,
+        Format::Exr | Format::Movie => false,
     }
 }
 
@@ -677,7 +691,7 @@ pub fn note(path: &Path, format: Format, key: &str) -> Option<String> {
             )
         }
         Format::Jpeg => jpeg_comments(reader).into_iter().find_map(from),
-        Format::Exr => None,
+        Format::Exr | Format::Movie => None,
     }
 }
 
