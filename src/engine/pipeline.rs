@@ -387,6 +387,10 @@ enum Resumed {
 /// chunk decodes, or a complete review frame: `media::complete`), and made
 /// by this job from these inputs (its fingerprint, `fingerprint.rs`).
 fn resumed(job: &Job, plan: &FramePlan) -> Resumed {
+    // A movie is one output, written whole again.
+    if job.media.as_ref().is_some_and(|r| r.movie.is_some()) {
+        return Resumed::Absent;
+    }
     let (path, media) = (&plan.output, job.media.as_ref().map(|r| r.media.format));
     // Only a frame that would be kept is worth decoding whole.
     let complete = || match media {
@@ -602,6 +606,9 @@ fn write_stage(job: &Job, rx: Receiver<Msg<Encoded>>, events: &impl Events) -> R
                     Some(Encoded::Chunks(_)) => Err(Error::internal("chunks for a review frame")),
                     None => Ok(None),
                 };
+                if let Some(movie) = &review.movie {
+                    return movie.frame(plan.label, size, alpha, strips);
+                }
                 let note = (fingerprint::ATTRIBUTE, plan.fingerprint.as_str());
                 match review.media.format {
                     media::Format::Dpx => crate::io::dpx_out::write_frame(

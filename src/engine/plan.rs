@@ -76,7 +76,7 @@ pub struct Job {
     pub all_parts: bool,
     /// The user's edits of the output's attributes (`--attrib`, `--timecode`...).
     pub attributes: Edits,
-    /// Review media (PNG, JPEG, TIFF) instead of EXR: how they are written.
+    /// Review media (PNG, JPEG, TIFF, a movie) instead of EXR: how they are written.
     pub media: Option<Review>,
     /// The slate this run writes before its frames (`--slate`), if any.
     pub slate: Option<SlateFrame>,
@@ -102,6 +102,8 @@ pub struct FirstFile {
 pub struct Review {
     pub media: crate::io::media::Media,
     pub burn_in: Option<crate::io::burn_in::BurnIn>,
+    /// The movie every frame goes into, for a movie output (.mov, .mp4).
+    pub movie: Option<Arc<crate::io::movie::Movie>>,
 }
 
 /// One output frame and, per input, the frame it reads.

@@ -25,6 +25,8 @@ pub enum Format {
     /// DPX for DI and editorial deliveries (`dpx_out`): code values as
     /// they are, not review frames, but written by the same path.
     Dpx,
+    /// A review movie (.mov, .mp4), written by `movie.rs`.
+    Movie,
 }
 
 impl Format {
@@ -40,6 +42,8 @@ impl Format {
             (".tif", Format::Tiff),
             (".tiff", Format::Tiff),
             (".dpx", Format::Dpx),
+            (".mov", Format::Movie),
+            (".mp4", Format::Movie),
         ]
         .into_iter()
         .find(|(end, _)| name.ends_with(end))
@@ -53,6 +57,7 @@ impl Format {
             Format::Jpeg => "JPEG",
             Format::Tiff => "TIFF",
             Format::Dpx => "DPX",
+            Format::Movie => "movie",
         }
     }
 }
@@ -94,6 +99,8 @@ pub struct Media {
     pub bits: Bits,
     pub quality: u8,
     pub transfer: Transfer,
+    /// A movie's codec carries alpha (`Format::Movie`: ProRes 4444).
+    pub movie_alpha: bool,
 }
 
 impl Media {
@@ -145,6 +152,7 @@ impl Media {
                 bits,
                 quality: quality.unwrap_or(DEFAULT_QUALITY),
                 transfer: transfer.unwrap_or(Transfer::Srgb),
+                movie_alpha: false,
             }),
         }
     }
@@ -171,9 +179,15 @@ impl Media {
 
     /// Whether frames keep an alpha channel: PNG and TIFF do when the image
     /// has one; JPEG has none and is written as the image over black (its
-    /// premultiplied colour, as oiiotool writes it).
+    /// premultiplied colour, as oiiotool writes it), nor do movies but
+    /// ProRes 4444.
     pub fn keeps_alpha(&self, has_alpha: bool) -> bool {
-        has_alpha && self.format != Format::Jpeg
+        has_alpha
+            && match self.format {
+                Format::Jpeg => false,
+                Format::Movie => self.movie_alpha,
+                _ => true,
+            }
     }
 
     /// The display code values of `rows`, a strip of the image whose data
@@ -348,7 +362,9 @@ pub fn write_frame(
         Format::Png => write_png(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Jpeg => write_jpeg(out, media.quality, size, note, &mut next, &fail),
         Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
-        Format::Exr | Format::Dpx => Err(Error::internal("an EXR or DPX frame as review media")),
+        Format::Exr | Format::Dpx | Format::Movie => {
+            Err(Error::internal("a frame of another format as review media"))
+        }
     })
 }
 
@@ -689,7 +705,7 @@ pub fn complete(path: &Path, format: Format) -> bool {
         Format::Jpeg => std::fs::read(path)
             .is_ok_and(|b| b.starts_with(&[0xff, 0xd8]) && b.ends_with(&[0xff, 0xd9])),
         Format::Dpx => super::dpx_out::complete(path),
-        Format::Exr => false,
+        Format::Exr | Format::Movie => false,
     }
 }
 
@@ -721,7 +737,7 @@ pub fn note(path: &Path, format: Format, key: &str) -> Option<String> {
             )
         }
         Format::Jpeg => jpeg_comments(reader).into_iter().find_map(from),
-        Format::Exr | Format::Dpx => None,
+        Format::Exr | Format::Dpx | Format::Movie => None,
     }
 }
 

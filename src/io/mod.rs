@@ -12,6 +12,7 @@ pub mod foreign;
 pub mod header_text;
 pub mod limits;
 pub mod media;
+pub mod movie;
 pub mod overwrite;
 pub mod parts;
 pub mod positioned;

@@ -58,13 +58,14 @@ impl FramePattern {
     }
 
     /// A pattern to write: as `parse`, and it must name a file of a format
-    /// exrcomp writes (`media::Format`: .exr, .png, .jpg, .jpeg, .tif, .tiff, .dpx).
+    /// exrcomp writes (`media::Format`: .exr, .png, .jpg, .jpeg, .tif, .tiff,
+    /// .dpx, .mov, .mp4).
     pub fn output(text: &str) -> Result<Self> {
         let pattern = Self::parse(text)?;
         if pattern.format().is_none() {
             return Err(Error::usage(format!(
-                "the output '{text}' does not end in .exr, .png, .jpg, .jpeg, .tif, .tiff or .dpx: \
-                 the formats exrcomp writes"
+                "the output '{text}' does not end in .exr, .png, .jpg, .jpeg, .tif, .tiff, .dpx, \
+                 .mov or .mp4: the formats exrcomp writes"
             )));
         }
         Ok(pattern)

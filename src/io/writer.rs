@@ -104,7 +104,7 @@ pub fn write_whole(path: &Path, bytes: &[u8]) -> Result<()> {
 /// being written. Another run's clean-up may remove the file between its
 /// creation and the lock (it was unlocked then): the file locked must still
 /// be the one at `path`, else it is made again under that name.
-fn create_locked(path: &Path) -> std::io::Result<File> {
+pub(crate) fn create_locked(path: &Path) -> std::io::Result<File> {
     use std::os::unix::fs::MetadataExt;
     loop {
         let file = fs::OpenOptions::new()

@@ -25,6 +25,7 @@ use crate::error::{Error, Kind, Result};
 use crate::io::attributes::Edits;
 use crate::io::burn_in::BurnIn;
 use crate::io::media::{Format, Media};
+use crate::io::movie::Movie;
 use crate::io::overwrite::{refuse_overwriting, FileSet};
 use crate::io::parts::{choose_part, split_part};
 use crate::io::reader::ExrFile;
@@ -286,7 +287,7 @@ fn luminance_inputs(
 }
 
 pub fn check_frame_count(frames: &[i64], output: &FramePattern) -> Result<()> {
-    if frames.len() > 1 && !output.is_sequence() {
+    if frames.len() > 1 && !output.is_sequence() && output.format() != Some(Format::Movie) {
         return Err(Error::usage(format!(
             "{} frames but the output {} has no frame number (use #### or %04d)",
             frames.len(),
@@ -410,7 +411,9 @@ fn slate_frame(
         return Ok(None);
     }
     let frame = shot[0] - 1;
-    if !output.is_sequence() || frames.contains(&frame) {
+    // A movie's slate is its first frame.
+    let own_file = output.is_sequence() || output.format() == Some(Format::Movie);
+    if !own_file || frames.contains(&frame) {
         return Err(Error::usage(format!(
             "--slate writes frame {frame} before the shot's first: the output {} needs a frame \
              number (####) and no frame {frame} of its own",
@@ -425,10 +428,19 @@ fn slate_frame(
 /// pipeline (for its slate), which then does not plan that frame again.
 /// Without a slate the pipeline plans it: its errors are that frame's.
 fn first_plans(job: &Job) -> Result<Option<Vec<FramePlan>>> {
-    match (&job.slate, job.frames.first()) {
-        (Some(_), Some(first)) => Ok(Some(plan_parts(job, first)?)),
-        _ => Ok(None),
+    let movie = job.media.as_ref().and_then(|r| r.movie.as_ref());
+    let Some(first) = job.frames.first() else {
+        return Ok(None);
+    };
+    if job.slate.is_none() && movie.is_none() {
+        return Ok(None);
     }
+    let plans = plan_parts(job, first)?;
+    // A movie's rate and timecode are its first frame's.
+    if let Some(movie) = movie {
+        movie.time_from(&plans[0].header, job.slate.is_some());
+    }
+    Ok(Some(plans))
 }
 
 /// The job writing `job`'s slate, from its first frame's `plans`: a black
@@ -459,8 +471,8 @@ fn slate_job(job: &Job, plans: Option<&Vec<FramePlan>>) -> Result<Option<Job>> {
     }))
 }
 
-/// How `output` is written when it names review media (PNG, JPEG, TIFF) or
-/// DPX,
+/// How `output` is written when it names review media (PNG, JPEG, TIFF, a
+/// movie) or DPX,
 /// from `run`'s options; options that do not apply to its format, and
 /// EXR-only ways of writing, are refused.
 fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
@@ -471,6 +483,7 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         ("--transfer", run.write.transfer.is_some()),
         ("--burn-in", run.write.burn_in.is_some()),
         ("--burn-in-corner", run.write.burn_in_corner.is_some()),
+        ("--codec", run.write.codec.is_some()),
     ]
     .into_iter()
     .filter_map(|(name, given)| given.then_some(name))
@@ -478,7 +491,8 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
     if format == Format::Exr {
         return match given.first() {
             Some(name) => Err(Error::usage(format!(
-                "{name} applies to review media and DPX outputs (.png, .jpg, .tif, .dpx), not {}",
+                "{name} applies to review media and DPX outputs (.png, .jpg, .tif, .mov, .mp4, \
+                 .dpx), not {}",
                 output.display()
             ))),
             None => Ok(None),
@@ -497,16 +511,28 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
             output.display()
         )));
     }
-    let media = Media::new(
-        format,
-        run.write.bits,
-        run.write.quality,
-        run.write.transfer,
-    )
-    .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?;
+    let (media, movie) = match format {
+        Format::Movie => movie(output, run)?,
+        _ if run.write.codec.is_some() => {
+            return Err(Error::usage(format!(
+                "--codec applies to movies (.mov, .mp4), not {}",
+                output.display()
+            )))
+        }
+        _ => (
+            Media::new(
+                format,
+                run.write.bits,
+                run.write.quality,
+                run.write.transfer,
+            )
+            .map_err(|e| Error::usage(format!("{}: {e}", output.display())))?,
+            None,
+        ),
+    };
     if format == Format::Dpx && run.write.burn_in.is_some() {
         return Err(Error::usage(format!(
-            "--burn-in applies to review media outputs (.png, .jpg, .tif), not {}",
+            "--burn-in applies to review media outputs (.png, .jpg, .tif, .mov, .mp4), not {}",
             output.display()
         )));
     }
@@ -517,7 +543,34 @@ fn review(output: &FramePattern, run: &RunArgs) -> Result<Option<Review>> {
         .map(|text| BurnIn::parse(text, run.write.burn_in_corner.unwrap_or_default()))
         .transpose()
         .map_err(Error::usage)?;
-    Ok(Some(Review { media, burn_in }))
+    Ok(Some(Review {
+        media,
+        burn_in,
+        movie,
+    }))
+}
+
+/// The review media and the movie of a movie output: one file, whose
+/// codec sets its bits.
+fn movie(output: &FramePattern, run: &RunArgs) -> Result<(Media, Option<Arc<Movie>>)> {
+    let refused = [
+        ("--bits", run.write.bits.is_some()),
+        ("--quality", run.write.quality.is_some()),
+    ];
+    if let Some((name, _)) = refused.iter().find(|(_, given)| *given) {
+        return Err(Error::usage(format!(
+            "{name} does not apply to movies ({}): --codec sets how they are encoded",
+            output.display()
+        )));
+    }
+    if output.is_sequence() {
+        return Err(Error::usage(format!(
+            "{}: a movie is one file, named without a frame number",
+            output.display()
+        )));
+    }
+    let movie = Movie::new(&output.path(0), run.write.codec)?;
+    Ok((movie.media(run.write.transfer), Some(Arc::new(movie))))
 }
 
 /// The attribute edits `run` asks for.
@@ -568,8 +621,11 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
                 Some(plans) => plans,
                 None => plan_parts(job, sources)?,
             };
-            if fingerprint::made_by(&plans[0].output, media, &plans[0].fingerprint) == Some(false) {
-                others.push(plans[0].output.clone());
+            let output = &plans[0].output;
+            if fingerprint::made_by(output, media, &plans[0].fingerprint) == Some(false)
+                && !others.contains(output)
+            {
+                others.push(output.clone());
             }
             for plan in plans {
                 bound = memory_bound(&plan, job).max(bound);
@@ -597,7 +653,27 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
             others,
         }));
     }
-    if let Some(slate) = &slate {
+    let written = write_all(job, slate.as_ref(), label, run, summary, first);
+    // A movie is placed once every frame is in it, else removed.
+    match (job.media.as_ref().and_then(|r| r.movie.as_ref()), &written) {
+        (Some(movie), Ok(())) => movie.finish()?,
+        (Some(movie), Err(_)) => movie.abort(),
+        (None, _) => {}
+    }
+    written.map(|()| None)
+}
+
+/// Writes `job`'s frames after its slate; a frame failed or an
+/// interruption is the run's error.
+fn write_all(
+    job: &Job,
+    slate: Option<&Job>,
+    label: &str,
+    run: &RunArgs,
+    summary: Summary,
+    first: Option<Vec<FramePlan>>,
+) -> Result<()> {
+    if let Some(slate) = slate {
         write_slate(slate, label, run)?;
     }
     let (report, summary) = run_with_progress(job, label, run, summary, first)?;
@@ -625,7 +701,7 @@ pub fn run_job(job: &Job, label: &str, run: &RunArgs, summary: Summary) -> Resul
             ),
         ));
     }
-    Ok(None)
+    Ok(())
 }
 
 /// A warning that `files`, frames a job would write, are there already,

@@ -10,7 +10,7 @@ use clap::Args;
 pub const FRAMES: &str = "Frames and sequences";
 pub const LAYERS: &str = "Layers, views and parts";
 pub const OUTPUT: &str = "Output";
-pub const MEDIA: &str = "Review media and DPX (.png, .jpg, .tif, .dpx outputs)";
+pub const MEDIA: &str = "Review media and DPX (.png, .jpg, .tif, .mov, .mp4, .dpx outputs)";
 pub const RUN_CONTROL: &str = "Run control";
 
 /// Which layers, views and parts an operation works on.
@@ -182,6 +182,10 @@ pub struct WriteArgs {
     /// The burn-in's corner (default bottom-left).
     #[arg(help_heading = MEDIA, long, value_enum)]
     pub burn_in_corner: Option<crate::io::burn_in::Corner>,
+    /// A review movie's codec: prores (ProRes 422 HQ, .mov's default),
+    /// prores4444 (with alpha), dnxhr (DNxHR HQ) or h264 (.mp4's).
+    #[arg(help_heading = MEDIA, long, value_enum)]
+    pub codec: Option<crate::io::movie::Codec>,
     /// Write a slate first: frame (the shot's first - 1), black, with the
     /// job's output, frames, inputs, timecode, fps and attributes in white;
     /// only by a run that starts at the shot's first frame.
@@ -212,6 +216,7 @@ impl WriteArgs {
             transfer: self.transfer.or(job.transfer),
             burn_in: self.burn_in.or(job.burn_in),
             burn_in_corner: self.burn_in_corner.or(job.burn_in_corner),
+            codec: self.codec.or(job.codec),
             slate: self.slate || job.slate,
         }
     }
@@ -314,6 +319,7 @@ mod tests {
             "transfer",
             "burn_in",
             "burn_in_corner",
+            "codec",
             "slate",
         ];
         assert_eq!(keys, expected);

@@ -32,6 +32,7 @@ mod matting;
 mod memory;
 mod merge_ops;
 mod metadata_and_time;
+mod movie;
 mod over_reference;
 mod overnight;
 mod passthrough;

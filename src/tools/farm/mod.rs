@@ -244,6 +244,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     let rules = rules(farm);
     let (task, needs, dry) =
         task_command(&job.command, &job.frames, cwd, (job.threads, rules.log))?;
+    one_task_for_a_movie(farm, &dry)?;
     if !dry.others.is_empty() {
         eprintln!("exrcomp: warning: {}", crate::run::others_made(&dry.others));
     }
@@ -314,6 +315,36 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     files
         .iter()
         .try_for_each(|(path, text)| write_whole(path, text.as_bytes()))
+}
+
+/// A movie output is one file, which one task writes whole (a retried task
+/// writes it again): a job writing one is refused unless its chunk holds
+/// every frame, and OpenJD's scheduler may not chunk it.
+fn one_task_for_a_movie(farm: &Farm, dry: &DryRun) -> Result<()> {
+    use crate::io::media::Format;
+    let Some(output) = dry.writes.first() else {
+        return Ok(());
+    };
+    if Format::of(&output.to_string_lossy()) != Some(Format::Movie) {
+        return Ok(());
+    }
+    let job = farm.job();
+    let frames = crate::io::sequence::parse_frame_list(&job.frames)?.len();
+    let scheduled =
+        matches!(farm, Farm::Openjd(o) if o.task_chunking || o.target_runtime.is_some());
+    if job.chunk < frames || scheduled {
+        return Err(Error::usage(format!(
+            "{} is a movie, written whole by one task: give --chunk {frames} (all the job's \
+             frames){}",
+            output.display(),
+            if scheduled {
+                " and no --task-chunking or --target-runtime"
+            } else {
+                ""
+            }
+        )));
+    }
+    Ok(())
 }
 
 /// What the job does and needs, for a render manager's view of it.
