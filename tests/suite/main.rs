@@ -19,6 +19,7 @@ mod diffrender_and_zmerge;
 mod farm;
 mod first_run;
 mod foreign_inputs;
+mod foreign_jpeg;
 mod foreign_png;
 mod foreign_tiff;
 mod grades;
