@@ -1,7 +1,7 @@
-//! Feeds arbitrary bytes to exrcomp's DPX, Cineon, PNG and TIFF readers as a file.
+//! Feeds arbitrary bytes to exrcomp's DPX, Cineon, PNG, TIFF and JPEG readers as a file.
 //!
 //! The input's first byte picks a magic number (DPX big- or little-endian,
-//! Cineon big- or little-endian, PNG, TIFF either way), which replaces its first four bytes, so
+//! Cineon big- or little-endian, PNG, TIFF either way, JPEG), which replaces its first four bytes, so
 //! that every input reaches a foreign reader's header checks rather than
 //! the EXR reader's. As `read_exr`: the file is opened with
 //! `ExrFile::open`, every row decoded (`check_part`), then `info` runs on
@@ -23,7 +23,7 @@ fn scratch() -> &'static PathBuf {
     })
 }
 
-const MAGIC: [[u8; 4]; 7] = [
+const MAGIC: [[u8; 4]; 9] = [
     *b"SDPX",
     *b"XPDS",
     [0x80, 0x2a, 0x5f, 0xd7],
@@ -31,6 +31,8 @@ const MAGIC: [[u8; 4]; 7] = [
     [0x89, b'P', b'N', b'G'],
     [b'I', b'I', 42, 0],
     [b'M', b'M', 0, 42],
+    [0xff, 0xd8, 0xff, 0xe0],
+    [0xff, 0xd8, 0xff, 0xdb],
 ];
 
 fuzz_target!(|data: &[u8]| {

@@ -316,3 +316,42 @@ fn damaged_pngs_are_refused_in_one_line_and_nothing_is_written() {
     ];
     assert_refused(dir.path(), "png", cases);
 }
+
+/// `png` with a chunk `kind` of `data` inserted after IHDR (bytes 8..33).
+fn with_chunk(png: &[u8], kind: &[u8; 4], data: &[u8]) -> Vec<u8> {
+    let mut chunk = (data.len() as u32).to_be_bytes().to_vec();
+    chunk.extend(kind);
+    chunk.extend(data);
+    chunk.extend(crc32(&chunk[4..]).to_be_bytes());
+    [&png[..33], &chunk[..], &png[33..]].concat()
+}
+
+#[test]
+fn an_offset_in_pixels_moves_the_data_window_as_oiiotool_moves_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let plain = Png::new(5, 3, ColorType::Rgb, BitDepth::Eight).bytes();
+    // oFFs: x, y (signed, big-endian) and the unit (0 pixels, 1 micrometres).
+    let offs =
+        |x: i32, y: i32, unit: u8| [&x.to_be_bytes()[..], &y.to_be_bytes(), &[unit]].concat();
+    for (name, chunk, origin) in [
+        ("pixels", offs(7, -3, 0), (7, -3)),
+        ("micrometres", offs(7, 3, 1), (0, 0)),
+    ] {
+        let input = dir.path().join(format!("{name}.png"));
+        std::fs::write(&input, with_chunk(&plain, b"oFFs", &chunk)).unwrap();
+        let output = dir.path().join(format!("{name}.exr"));
+        transcode(&input, &output, &[]);
+        let meta = exr::meta::MetaData::read_from_file(&output, false).unwrap();
+        let header = &meta.headers[0];
+        let position = header.own_attributes.layer_position;
+        assert_eq!((position.x(), position.y()), origin, "{name}");
+        let display = header.shared_attributes.display_window;
+        assert_eq!(
+            (display.position.x(), display.position.y()),
+            (0, 0),
+            "{name}"
+        );
+        assert_eq!((display.size.x(), display.size.y()), (5, 3), "{name}");
+        assert_as_oiiotool(&input, &output, false);
+    }
+}

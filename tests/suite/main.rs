@@ -20,6 +20,7 @@ mod dpx_output;
 mod farm;
 mod first_run;
 mod foreign_inputs;
+mod foreign_jpeg;
 mod foreign_png;
 mod foreign_tiff;
 mod grades;

@@ -4,11 +4,12 @@
 //! demand, by row range, with positioned reads, so that memory stays flat in
 //! the image's height. `ExrFile::open` asks `sniff` for a magic number it
 //! knows and `open` for the reader; a format is one file here that parses
-//! its header into a `Foreign` (a TIFF or PNG reader is another file and a
-//! line in `sniff` and `open`). specs/file-format.md, "Foreign inputs".
+//! its header into a `Foreign` (a TIFF, PNG or JPEG reader is another file
+//! and a line in `sniff` and `open`). specs/file-format.md, "Foreign inputs".
 
 pub mod cineon;
 pub mod dpx;
+pub mod jpeg;
 pub mod png;
 mod raw;
 mod stream;
@@ -28,6 +29,7 @@ pub enum Format {
     Cineon,
     Png,
     Tiff,
+    Jpeg,
 }
 
 impl Format {
@@ -37,6 +39,7 @@ impl Format {
             Format::Cineon => "Cineon",
             Format::Png => "PNG",
             Format::Tiff => "TIFF",
+            Format::Jpeg => "JPEG",
         }
     }
 }
@@ -50,6 +53,7 @@ pub fn sniff(magic: [u8; 4]) -> Option<Format> {
         [b'I', b'I', 42, 0] | [b'M', b'M', 0, 42] | [b'I', b'I', 43, 0] | [b'M', b'M', 0, 43] => {
             Some(Format::Tiff)
         }
+        [0xff, 0xd8, 0xff, _] => Some(Format::Jpeg),
         _ => None,
     }
 }
@@ -96,6 +100,7 @@ pub fn open(file: &File, len: u64, format: Format) -> Result<Foreign, String> {
         Format::Cineon => cineon::open(file, len),
         Format::Png => png::open(file, len),
         Format::Tiff => tiff::open(file, len),
+        Format::Jpeg => jpeg::open(file, len),
     }
 }
 

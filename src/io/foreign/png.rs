@@ -97,7 +97,13 @@ pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
     };
     let (attributes, gamma) = attributes(info);
     let attributes = attributes.iter().map(|(n, v)| (n.as_str(), v.clone()));
-    let header = super::header((width, height), names, sample, attributes.collect());
+    let mut header = super::header((width, height), names, sample, attributes.collect());
+    if let Some((x, y)) = pixel_offset(file)? {
+        if x.checked_add(width as i32).is_none() || y.checked_add(height as i32).is_none() {
+            return Err(format!("its oFFs origin {x}, {y} puts pixels beyond 2^31"));
+        }
+        header.own_attributes.layer_position = exr::math::Vec2(x, y);
+    }
     let rows = Png {
         width,
         height,
@@ -117,6 +123,31 @@ pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
         rows: Box::new(rows),
         header_bytes: len.min(4096) as usize,
     })
+}
+
+/// The image's origin from an oFFs chunk in pixels (before the image
+/// data), which OpenImageIO takes as the data window's origin (the display
+/// window stays at 0, 0; an offset in micrometres it ignores). The png
+/// crate does not parse the chunk: the chunks are walked here.
+fn pixel_offset(file: &File) -> Result<Option<(i32, i32)>, String> {
+    let mut at = 8u64;
+    // A bound on the walk: a file of more chunks than this is not a PNG's.
+    for _ in 0..100_000 {
+        let Ok(head) = crate::io::positioned::read_at(file, at, 8) else {
+            break;
+        };
+        if matches!(&head[4..8], b"IDAT" | b"IEND") {
+            break;
+        }
+        let length = u32::from_be_bytes(head[..4].try_into().expect("4 bytes")) as u64;
+        if &head[4..8] == b"oFFs" && length == 9 {
+            let data = crate::io::positioned::read_at(file, at + 8, 9)?;
+            let int = |i: usize| i32::from_be_bytes(data[i..i + 4].try_into().expect("4 bytes"));
+            return Ok((data[8] == 0).then(|| (int(0), int(4))));
+        }
+        at += 12 + length;
+    }
+    Ok(None)
 }
 
 /// OpenImageIO's `%.2g` of a gamma (2.2, 1.8, 2, 0.45).
