@@ -31,6 +31,7 @@ mod matting;
 mod memory;
 mod merge_ops;
 mod metadata_and_time;
+mod opaque;
 mod over_reference;
 mod overnight;
 mod passthrough;
