@@ -158,6 +158,29 @@ pub trait Op: Send + Sync + std::fmt::Debug {
         false
     }
 
+    /// Whether, given its inputs' channels, the result can be the first
+    /// input bit for bit whatever the second holds, where `hides_second`
+    /// says so (merge over and copy, premultiplied, unmixed, every output
+    /// channel composited): what lets an output block be the first input's
+    /// chunk and the second's go undecoded (`opaque.rs`).
+    fn may_hide_second(&self, _inputs: &[&[ChannelDescription]]) -> bool {
+        false
+    }
+
+    /// Whether the result is `first` bit for bit over rows `rows` and
+    /// columns `columns` (absolute), whatever the second input holds there
+    /// (given its channels): an opaque foreground. Asked only where
+    /// `may_hide_second`.
+    fn hides_second(
+        &self,
+        _first: &Rows,
+        _second: &[ChannelDescription],
+        _rows: Range<i32>,
+        _columns: Range<i32>,
+    ) -> bool {
+        false
+    }
+
     /// Fills `out` (its rows, columns and channels are set; samples are zero)
     /// for frame `frame`. Each input holds at least rows
     /// `out.y - halo .. out.end() + halo`, clipped to the output's data

@@ -11,6 +11,7 @@ pub mod graph;
 pub mod interrupt;
 pub mod luminance_chroma;
 pub mod memory_bound;
+pub mod opaque;
 pub mod output_limit;
 pub mod passthrough;
 pub mod pipeline;

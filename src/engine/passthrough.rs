@@ -10,14 +10,13 @@
 //! coordinates. Rules: specs/architecture.md,
 //! "Blocks passed through".
 
-use super::decode::{decode_strip, InputCursor, Region};
 use super::frame_plan::{output_grid, FramePlan};
 use super::graph::{intersection, moved, Graph, Node};
 use crate::error::Result;
 use crate::io::rows::Rows;
 use crate::io::writer::IndexedChunk;
 use crate::stage_time::{self, Stage};
-use exr::block::chunk::CompressedBlock;
+use exr::block::chunk::{Chunk, CompressedBlock};
 use exr::math::Vec2;
 use exr::meta::attribute::{ChannelDescription, IntegerBounds};
 use exr::prelude::Compression;
@@ -41,13 +40,13 @@ pub struct PassThrough {
 }
 
 /// An output block made of an input's chunk.
-struct PassedBlock {
+pub(super) struct PassedBlock {
     /// The block's index in the output's offset table.
-    index: usize,
+    pub index: usize,
     /// The input's chunk index.
-    chunk: usize,
+    pub chunk: usize,
     /// The block's column and row in the output's grid.
-    tile: Vec2<usize>,
+    pub tile: Vec2<usize>,
 }
 
 impl PassThrough {
@@ -139,56 +138,19 @@ impl PassThrough {
         })
     }
 
-    /// Decodes `regions` of every input (those of output strip `rows`) but
-    /// the source's chunks of the blocks that pass, which come back checked,
-    /// as output chunks.
-    pub fn decode(
-        &self,
-        plan: &FramePlan,
-        graph: &Graph,
-        cursors: &mut [InputCursor],
-        regions: &[Region],
-        rows: Range<i32>,
-    ) -> Result<(Vec<Rows>, Vec<IndexedChunk>)> {
-        let source = self.source;
-        let mut strips = decode_strip(cursors, regions, |i| i != source, |_, _| false)?;
-        let blocks = self.blocks(plan, graph, &strips, rows);
-        let passed = |k: usize| blocks.iter().any(|b| b.chunk == k);
-        let mut own = decode_strip(cursors, regions, |i| i == source, |_, k| passed(k))?;
-        strips[source] = own[source].take();
-        let strips = strips
-            .into_iter()
-            .map(|s| s.expect("every input decoded"))
-            .collect();
-        Ok((strips, self.chunks(plan, &blocks)?))
-    }
-
     /// The source's chunk that is output block `block` (its pixels, in the
     /// output's coordinates): one of the same pixels once moved, inside
-    /// every node's data window. The grids line up (`find`).
+    /// every node's data window.
     fn chunk(&self, plan: &FramePlan, block: IntegerBounds) -> Option<usize> {
         if intersection(block, self.inside) != block {
             return None;
         }
-        let (input, level) = (
-            plan.header_of(self.source).data_window(),
-            plan.levels[self.source],
-        );
-        let at = moved(block, self.shift);
-        let (x, y) = (
-            at.position.x() - input.position.x(),
-            at.position.y() - input.position.y(),
-        );
-        // Inside the source's window, so at or right of and below its
-        // corner. The chunk's pixels: the last column and row cut short.
-        let covers = intersection(IntegerBounds::new(at.position, level.block), input);
-        let (column, row) = (x as usize / level.block.x(), y as usize / level.block.y());
-        (covers == at).then(|| level.chunk(column, row))
+        chunk_at(plan, self.source, block, self.shift)
     }
 
     /// The output blocks within `rows` (whole blocks of the output's grid)
     /// that are the source's chunks, given the strips of the other inputs.
-    fn blocks(
+    pub(super) fn blocks(
         &self,
         plan: &FramePlan,
         graph: &Graph,
@@ -265,31 +227,64 @@ impl PassThrough {
 
     /// The source's chunks for `blocks`, each checked to decompress, as
     /// output chunks, placed where the output has them.
-    fn chunks(&self, plan: &FramePlan, blocks: &[PassedBlock]) -> Result<Vec<IndexedChunk>> {
+    pub(super) fn chunks(
+        &self,
+        plan: &FramePlan,
+        blocks: &[PassedBlock],
+    ) -> Result<Vec<IndexedChunk>> {
         let (file, part) = (&plan.inputs[self.source], plan.parts[self.source]);
-        let (top, lines) = (
-            plan.window().position.y(),
-            output_grid(&plan.header).block.y(),
-        );
         blocks
             .par_iter()
             .map(|block| {
-                let mut chunk =
+                let chunk =
                     stage_time::task(Stage::Decode, || file.checked_zip_chunk(part, block.chunk))?;
-                // A tile's coordinates count from the data window's corner,
-                // a scanline block's y is its first row's.
-                match &mut chunk.compressed_block {
-                    CompressedBlock::Tile(tile) => tile.coordinates.tile_index = block.tile,
-                    CompressedBlock::ScanLine(line) => {
-                        line.y_coordinate = top + (block.tile.y() * lines) as i32
-                    }
-                    _ => unreachable!("flat chunks only"),
-                }
-                Ok(IndexedChunk {
-                    index: block.index,
-                    chunk,
-                })
+                Ok(placed(plan, chunk, block))
             })
             .collect()
     }
+}
+
+/// Chunk `chunk` as output block `block`, stored at the output's
+/// coordinates: a tile's column and row count from the data window's
+/// corner, a scanline block's y is its first row's.
+pub(super) fn placed(plan: &FramePlan, mut chunk: Chunk, block: &PassedBlock) -> IndexedChunk {
+    let (top, lines) = (
+        plan.window().position.y(),
+        output_grid(&plan.header).block.y(),
+    );
+    match &mut chunk.compressed_block {
+        CompressedBlock::Tile(tile) => tile.coordinates.tile_index = block.tile,
+        CompressedBlock::ScanLine(line) => {
+            line.y_coordinate = top + (block.tile.y() * lines) as i32
+        }
+        _ => unreachable!("flat chunks only"),
+    }
+    IndexedChunk {
+        index: block.index,
+        chunk,
+    }
+}
+
+/// Input `input`'s chunk (of the level it reads) holding exactly output
+/// block `block` moved by `shift`: the block inside the input's data
+/// window, starting a whole number of its blocks from its corner, and as
+/// large as the chunk's pixels (the last column and row cut short).
+pub(super) fn chunk_at(
+    plan: &FramePlan,
+    input: usize,
+    block: IntegerBounds,
+    shift: (i32, i32),
+) -> Option<usize> {
+    let (window, level) = (plan.header_of(input).data_window(), plan.levels[input]);
+    let at = moved(block, shift);
+    let (x, y) = (
+        at.position.x() - window.position.x(),
+        at.position.y() - window.position.y(),
+    );
+    let (bx, by) = (level.block.x() as i32, level.block.y() as i32);
+    if intersection(at, window) != at || x % bx != 0 || y % by != 0 {
+        return None;
+    }
+    let covers = intersection(IntegerBounds::new(at.position, level.block), window);
+    (covers == at).then(|| level.chunk((x / bx) as usize, (y / by) as usize))
 }

@@ -9,6 +9,7 @@ use super::encode::encode_rows;
 use super::fingerprint;
 use super::frame_plan::{output_grid, plan_parts, FramePlan};
 use super::interrupt;
+use super::opaque::{self, Opaque};
 use super::passthrough::PassThrough;
 use super::plan::{FrameSources, Job};
 use crate::error::{Error, Kind, Result};
@@ -306,11 +307,12 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         .collect();
     // The columns computed: the window's, and those the halos reach beyond it.
     let columns = (plan.computed.position.x(), plan.computed.size.width());
-    // Review media have no chunks to pass.
+    // Review media have no chunks to pass, but decode nothing hidden.
     let pass = match job.media {
         Some(_) => None,
         None => PassThrough::find(plan.graph(job), plan),
     };
+    let opaque = Opaque::find(plan.graph(job), plan, job.media.is_none());
     // Per input, its columns, whether it is read bottom-up, and the rows
     // read so far (none yet: an empty range at its first row).
     let mut fed: Vec<((i32, usize), bool, Range<i32>)> = (0..plan.inputs.len())
@@ -353,11 +355,12 @@ fn decode_part(job: &Job, plan: &Arc<FramePlan>, tx: &Sender<Msg<Decoded>>) -> R
         // On a pool thread, as the compose stage's strips are.
         let (strips, passed) = rayon::scope(|_| {
             planted_panic(Stage::Decode, plan.frame);
-            match &pass {
-                Some(pass) => {
-                    pass.decode(plan, plan.graph(job), &mut cursors, &regions, rows.clone())
+            match (&pass, &opaque) {
+                (None, None) => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
+                skips => {
+                    let (graph, skips) = (plan.graph(job), (skips.0.as_ref(), skips.1.as_ref()));
+                    opaque::decode(skips, plan, graph, &mut cursors, &regions, rows.clone())
                 }
-                None => Ok((decode_regions(&mut cursors, &regions)?, Vec::new())),
             }
         })?;
         let decoded = Decoded {

@@ -7,7 +7,7 @@ use crate::engine::graph::{intersection, union, GraphBuilder, NodeId, Op};
 use crate::io::rows::{Extent, Rows, RowsMut};
 use crate::io::text::Utf8Text;
 use crate::params::MIX;
-use exr::meta::attribute::{ChannelDescription, IntegerBounds};
+use exr::meta::attribute::{ChannelDescription, IntegerBounds, SampleType};
 use std::ops::Range;
 
 /// Runs `$body` with `$op` a constant of `$value`'s operator: one copy of
@@ -452,6 +452,46 @@ impl Op for Merge {
             .all(|y| visible_columns(a, &layers, y).is_empty())
     }
 
+    /// Over: a + (1 − αa) b is a exactly where αa = 1 (the weight 0 drops b,
+    /// an infinity or NaN too), and its alpha 1; copy is a, αa everywhere.
+    /// Straight colour divides by the alpha (which quiets a signalling NaN),
+    /// a mix below 1 and a channel from B alone bring B in.
+    fn may_hide_second(&self, inputs: &[&[ChannelDescription]]) -> bool {
+        let layers = self.layers.resolve(inputs);
+        matches!(self.op, MergeOp::Over | MergeOp::Copy)
+            && !self.straight
+            && self.mix == 1.0
+            && self
+                .roles(&self.channels(inputs), &layers)
+                .iter()
+                .all(|role| !matches!(role, Role::FromB))
+    }
+
+    fn hides_second(
+        &self,
+        a: &Rows,
+        b: &[ChannelDescription],
+        rows: Range<i32>,
+        columns: Range<i32>,
+    ) -> bool {
+        let v = a.valid;
+        let inside = v.position.y() <= rows.start
+            && rows.end <= v.end().y()
+            && v.position.x() <= columns.start
+            && columns.end <= v.end().x()
+            && a.y <= rows.start
+            && rows.end <= a.end()
+            && a.x <= columns.start
+            && columns.end <= a.x + a.width as i32;
+        if !inside || self.op == MergeOp::Copy {
+            return inside;
+        }
+        let layers = self.layers.resolve(&[a.channels.as_slice(), b]);
+        let from = (columns.start - a.x) as usize..(columns.end - a.x) as usize;
+        rows.into_iter()
+            .all(|y| layers.iter().all(|l| opaque(a, l, y, from.clone())))
+    }
+
     fn compute(&self, _frame: i64, inputs: &[&Rows], out: &mut RowsMut) -> Result<(), String> {
         let (a, b) = (inputs[0], inputs[1]);
         let lists = [a.channels.as_slice(), b.channels.as_slice()];
@@ -462,7 +502,21 @@ impl Op for Merge {
         let mut alphas = vec![(vec![0.0f32; w], vec![0.0f32; w], vec![0.0f32; w]); layers.len()];
         let (mut ca, mut cb) = (vec![0.0f32; w], vec![0.0f32; w]);
         let keep_b = self.b_passes();
+        // Where A hides B along a whole row (`hides_second`) the result is
+        // A's samples, copied rather than blended: the same bits (half and
+        // float alone: a u32 through f32 would round).
+        let copies_a = self.may_hide_second(&lists)
+            && out.channels.iter().all(|c| {
+                let kind = c.sample_type;
+                matches!(kind, SampleType::F16 | SampleType::F32)
+                    && a.channel_index(&c.name.utf8())
+                        .is_some_and(|i| a.channels[i].sample_type == kind)
+            });
         for y in out.valid_rows() {
+            if copies_a && self.hides_row(a, &layers, y, &columns) {
+                copy_row(out, a, y, &columns);
+                continue;
+            }
             // Where A is transparent black, B passes as it is (bit for bit);
             // only the columns between A's first and last visible pixels blend.
             let span = if keep_b {
@@ -528,6 +582,36 @@ impl Op for Merge {
             }
         }
         Ok(())
+    }
+}
+
+impl Merge {
+    /// Whether A hides B over sample offsets `columns` of row `y`: inside
+    /// A's data window, and (but for copy) opaque in every layer.
+    fn hides_row(&self, a: &Rows, layers: &[Layer], y: i32, columns: &Range<usize>) -> bool {
+        let inside = a.valid_columns();
+        a.valid_row(y)
+            && inside.start <= columns.start
+            && columns.end <= inside.end
+            && (self.op == MergeOp::Copy || layers.iter().all(|l| opaque(a, l, y, columns.clone())))
+    }
+}
+
+/// Copies A's samples of row `y`, sample offsets `columns`, into each
+/// channel of `out` of the same name.
+fn copy_row(out: &mut RowsMut, a: &Rows, y: i32, columns: &Range<usize>) {
+    let at = |rows: &Extent| {
+        let r = rows.row_range(y);
+        r.start + columns.start..r.start + columns.end
+    };
+    let dst = at(out);
+    for c in 0..out.channels.len() {
+        let s = a
+            .channel_index(&out.channels[c].name.utf8())
+            .expect("every channel is A's");
+        out.planes[c]
+            .bytes_mut(dst.clone())
+            .copy_from_slice(a.planes[s].bytes(at(a)));
     }
 }
 
@@ -609,6 +693,23 @@ fn read_or_zero(rows: &Rows, name: &str, range: Range<usize>, out: &mut [f32]) {
         Some(c) => rows.planes[c].read_f32(range, out),
         None => out.fill(0.0),
     }
+}
+
+/// Whether `layer`'s alpha is exactly 1 in sample offsets `columns` of row
+/// `y` of `rows` (inside its data window), compared as stored: 1 of any
+/// sample type, no NaN. Without an alpha channel it is 1 there.
+fn opaque(rows: &Rows, layer: &Layer, y: i32, columns: Range<usize>) -> bool {
+    let Some(c) = layer.alphas.iter().find_map(|n| rows.channel_index(n)) else {
+        return true;
+    };
+    let start = rows.row_range(y).start;
+    let bytes = rows.planes[c].bytes(start + columns.start..start + columns.end);
+    let one: &[u8] = match rows.channels[c].sample_type {
+        SampleType::F16 => &[0x00, 0x3c],
+        SampleType::F32 => &[0x00, 0x00, 0x80, 0x3f],
+        SampleType::U32 => &[1, 0, 0, 0],
+    };
+    bytes.chunks_exact(one.len()).all(|sample| sample == one)
 }
 
 /// The sample offsets of row `y` from A's first to its last pixel that is

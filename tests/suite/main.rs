@@ -34,6 +34,7 @@ mod memory;
 mod merge_ops;
 mod metadata_and_time;
 mod movie;
+mod opaque;
 mod over_reference;
 mod overnight;
 mod passthrough;
