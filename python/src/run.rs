@@ -77,6 +77,10 @@ pub fn run_job(
     threads: Option<usize>,
     progress: Option<Py<PyAny>>,
 ) -> PyResult<Py<PyAny>> {
+    // glibc's malloc set as the command sets it (one arena, freed strips
+    // kept): without it a Python run of `over` took 9.7% more wall time.
+    static ALLOCATOR: std::sync::Once = std::sync::Once::new();
+    ALLOCATOR.call_once(exrcomp::cli::program::keep_freed_memory);
     let mut run = run_args(&settings).map_err(|e| failure(&e))?;
     set_threads(threads).map_err(|e| failure(&e))?;
     let (send, ended) = crossbeam_channel::unbounded::<Ended>();

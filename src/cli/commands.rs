@@ -63,7 +63,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             };
             copy("transcode", input, &output, &layers, &run)
         }
-        // The tools' commands are run by main.rs, and refused in a farm task
+        // The tools' commands are run by cli/program.rs, and refused in a farm task
         // (src/tools/farm.rs) before they come here.
         Command::Info { .. } | Command::Bench(_) | Command::Demo { .. } | Command::Farm { .. } => {
             Err(Error::usage("this command writes no frames of a job"))

@@ -65,7 +65,7 @@ pub struct Reaching {
 }
 
 /// The first pass that measures an op node's parameters from the read
-/// that reaches it (src/cli/commands.rs: `Operation::measure` on a job of
+/// that reaches it (src/run/job_run.rs: `Operation::measure` on a job of
 /// that read).
 pub type FirstPass<'a> = dyn Fn(&'static Operation, &Args, &Reaching) -> Result<Measured> + 'a;
 
