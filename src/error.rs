@@ -40,6 +40,11 @@ impl Kind {
 pub struct Error {
     pub kind: Kind,
     pub message: String,
+    /// The file and frame the message names (`Error::input`, `output`),
+    /// for front ends that give them apart (the Python package's
+    /// exceptions); `None` when the message names none.
+    pub file: Option<std::path::PathBuf>,
+    pub frame: Option<i64>,
 }
 
 pub type Result<T> = std::result::Result<T, Error>;
@@ -49,6 +54,8 @@ impl Error {
         Error {
             kind,
             message: message.into(),
+            file: None,
+            frame: None,
         }
     }
 
@@ -66,12 +73,20 @@ impl Error {
 
     /// An input problem, naming the file and, for sequences, the frame.
     pub fn input(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> Self {
-        Self::new(Kind::Input, located(path, frame, message))
+        Self::new(Kind::Input, located(path, frame, message)).at(path, frame)
     }
 
     /// An output problem, naming the file and, for sequences, the frame.
     pub fn output(path: &Path, frame: Option<i64>, message: impl fmt::Display) -> Self {
-        Self::new(Kind::Output, located(path, frame, message))
+        Self::new(Kind::Output, located(path, frame, message)).at(path, frame)
+    }
+
+    fn at(self, path: &Path, frame: Option<i64>) -> Self {
+        Error {
+            file: Some(path.to_path_buf()),
+            frame,
+            ..self
+        }
     }
 
     /// A panic (`guard::Panic`: its message and place), said as a bug to

@@ -1,22 +1,21 @@
 //! Each frame-writing subcommand translated into a run (src/run/): its
 //! inputs, graph and settings.
 
-use crate::cli::job_file::{JobFileContents, Reaching};
 use crate::cli::{Command, Invocation};
 use crate::engine::graph::{Graph, GraphBuilder};
-use crate::engine::plan::{FirstFile, Job};
 use crate::error::{Error, Result};
 use crate::io::media::Format;
 use crate::io::overwrite::refuse_overwriting;
 use crate::io::sequence::FramePattern;
-use crate::ops::declare::{Args, Measured, Operation};
+use crate::ops::declare::Args;
 use crate::ops::layers::Selection;
 use crate::ops::sources::plate::Plate;
+use crate::run::job_run::run_file;
 use crate::run::report::Summary;
 use crate::run::settings::{LayerArgs, RunArgs};
-use crate::run::{check_frame_count, frame_list, input_job, plate_job, run_job, DryRun, JobInputs};
-use std::cell::RefCell;
-use std::collections::HashMap;
+use crate::run::{
+    check_frame_count, frame_list, input_job, plate_job, run_job, DryRun, JobInputs,
+};
 use std::path::{Path, PathBuf};
 
 /// Runs frame-writing `command`; a dry run gives what it found.
@@ -24,7 +23,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
     match command {
         Command::Op(call) => operation(call),
         Command::Stitch { bands, output } => stitch(&bands, &output).map(|()| None),
-        Command::Run { job, output, run } => job_file(&job, output, run),
+        Command::Run { job, output, run } => run_file(&job, None, output, run),
         Command::Flatten {
             input,
             output,
@@ -72,7 +71,7 @@ pub fn execute(command: Command) -> Result<Option<DryRun>> {
             };
             copy("transcode", input, &output, &layers, &run)
         }
-        // The tools' commands are run by main.rs, and refused in a farm task
+        // The tools' commands are run by cli/program.rs, and refused in a farm task
         // (src/tools/farm.rs) before they come here.
         Command::Info { .. } | Command::Bench(_) | Command::Demo { .. } | Command::Farm { .. } => {
             Err(Error::usage("this command writes no frames of a job"))
@@ -108,77 +107,6 @@ fn stitch(bands: &[PathBuf], output: &Path) -> Result<()> {
     }
     refuse_overwriting(bands.to_vec(), [(None, output.to_path_buf())])?;
     crate::io::stitch::stitch(bands, output)
-}
-
-/// A job file's job, the command line's settings over its write node's.
-fn job_file(path: &Path, output: Option<String>, run: RunArgs) -> Result<Option<DryRun>> {
-    let (mut contents, opened) = load_job(path, output.as_deref(), &run)?;
-    if let Some(output) = output {
-        contents.output = output;
-    }
-    let run = RunArgs {
-        frames: run.frames.clone().or(contents.frames),
-        write: run.write.clone().over(contents.write),
-        ..run
-    };
-    let (texts, parts): (Vec<String>, Vec<Option<String>>) = contents.reads.into_iter().unzip();
-    let given = JobInputs {
-        texts: &texts,
-        read_parts: &parts,
-        opened: &opened,
-    };
-    let (job, summary) = input_job(
-        given,
-        &contents.output,
-        contents.graph,
-        contents.header_from,
-        &LayerArgs::default(),
-        &run,
-    )?;
-    run_job(&job, "run", &run, summary)
-}
-
-/// A job file's contents, its nodes' measured parameters (`from = "auto"`)
-/// read from the files as the command line's are, once per read (`output`
-/// and `run`: the command line's, over the job's); and the first files the
-/// measuring opened, for the job to take over.
-pub fn load_job(
-    path: &Path,
-    output: Option<&str>,
-    run: &RunArgs,
-) -> Result<(JobFileContents, Vec<Option<FirstFile>>)> {
-    let jobs: RefCell<HashMap<String, Job>> = RefCell::default();
-    let measure = |op: &'static Operation, args: &Args, at: &Reaching| -> Result<Measured> {
-        let Some(measure) = op.measure else {
-            return Ok(Measured::default());
-        };
-        let key = format!("{}:{:?}", at.read, at.part);
-        if !jobs.borrow().contains_key(&key) {
-            let run = RunArgs {
-                frames: run.frames.clone().or(at.frames.clone()),
-                ..run.clone()
-            };
-            let output = output.unwrap_or(&at.output);
-            let (texts, parts) = ([at.read.clone()], [at.part.clone()]);
-            let layers = LayerArgs::default();
-            let given = JobInputs {
-                texts: &texts,
-                read_parts: &parts,
-                opened: &[],
-            };
-            let (job, _) = input_job(given, output, Graph::identity(), 0, &layers, &run)?;
-            jobs.borrow_mut().insert(key.clone(), job);
-        }
-        let measured = measure(args, &jobs.borrow()[&key], &at.edits, run.dry_run)
-            .map_err(|e| Error::new(e.kind, format!("{}: {}", at.place, e.message)))?;
-        if run.dry_run && !run.quiet {
-            (measured.notes.iter()).for_each(|n| eprintln!("{}: {n}", at.place));
-        }
-        Ok(measured)
-    };
-    let contents = crate::cli::job_file::load(path, run.proxy_scale, &measure)?;
-    let opened = jobs.take().into_values().flat_map(|job| job.first_files);
-    Ok((contents, opened.collect()))
 }
 
 /// `input` written again as `output` (`label`: flatten, transcode).

@@ -3,7 +3,7 @@
 
 pub mod command_line;
 pub mod commands;
-pub mod job_file;
+pub mod program;
 
 use crate::ops::declare::{Operation, REPEATED};
 use crate::run::settings::{parse_level, CompressionName, LayerArgs, PartArgs, RunArgs};
@@ -683,8 +683,8 @@ fn refuse_local_threads(matches: &ArgMatches) -> Result<(), clap::Error> {
 }
 
 /// The command line parsed, or the process ended with clap's message.
-pub fn parse() -> Cli {
-    let matches = command().get_matches();
+pub fn parse<I: Into<std::ffi::OsString> + Clone>(args: impl IntoIterator<Item = I>) -> Cli {
+    let matches = command().get_matches_from(args);
     refuse_not_applicable(&matches)
         .and_then(|()| refuse_local_threads(&matches))
         .and_then(|()| Cli::from_arg_matches(&matches))

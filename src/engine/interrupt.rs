@@ -43,6 +43,19 @@ extern "C" fn on_terminate(_: libc::c_int) {
     }
 }
 
+/// A stop asked for by a front end that owns the signals itself (the
+/// Python package, on KeyboardInterrupt): as Ctrl-C's first press.
+pub fn request() {
+    REQUESTED.store(true, Ordering::SeqCst);
+}
+
+/// A new run in a process that outlives its runs (the Python package's):
+/// an earlier run's stop does not stop it.
+pub fn reset() {
+    REQUESTED.store(false, Ordering::SeqCst);
+    TERMINATED.store(false, Ordering::SeqCst);
+}
+
 pub fn requested() -> bool {
     REQUESTED.load(Ordering::SeqCst)
 }

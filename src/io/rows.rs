@@ -531,7 +531,7 @@ impl Rows {
 
     /// Room for `height` rows in all, so that growing to them moves no
     /// plane: a plane grown by moving holds its old buffer and a new one
-    /// twice the size, the old left in the heap (`mallopt` in `main.rs`).
+    /// twice the size, the old left in the heap (`mallopt` in `cli/program.rs`).
     pub fn reserve(&mut self, height: usize) {
         for plane in &mut self.planes {
             plane.reserve_total(height * self.extent.width);

@@ -1,6 +1,6 @@
 //! An operation declared once: its name, inputs and parameters (names, help,
 //! defaults, bounds) and how it adds its nodes to a graph. The command line
-//! (src/cli/mod.rs) and the job file's op node (src/cli/job_file.rs) are both made from
+//! (src/cli/mod.rs) and the job file's op node (src/run/job_file.rs) are both made from
 //! the declaration, so the two cannot disagree. Recipe: specs/architecture.md,
 //! "Adding an operation".
 

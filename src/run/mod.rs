@@ -3,10 +3,12 @@
 //! (src/run/settings.rs), their frames resolved and inputs checked, then
 //! run with their progress and summary (src/run/report.rs).
 
+pub mod job_file;
+pub mod job_run;
 pub mod report;
 pub mod settings;
 
-use settings::{LayerArgs, RunArgs};
+use settings::{FrameHook, LayerArgs, RunArgs};
 
 use crate::engine::fingerprint;
 use crate::engine::frame_plan::{plan_parts, FramePlan};
@@ -45,6 +47,7 @@ use exr::meta::attribute::IntegerBounds;
 use exr::prelude::Compression;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// What a dry run of a frame-writing command found.
@@ -725,6 +728,7 @@ fn write_slate(slate: &Job, label: &str, run: &RunArgs) -> Result<()> {
         quiet: true,
         // Its line, but no progress of its own: the run's counts its frames.
         progress: run.progress.map(|_| FarmLog::Frames),
+        on_frame: None,
         ..run.clone()
     };
     let (_, summary) = run_with_progress(slate, label, &quiet, Summary::default(), None)?;
@@ -890,6 +894,8 @@ pub fn run_with_progress(
         },
         warned: std::sync::Once::new(),
         summary: Mutex::new(summary),
+        on_frame: run.on_frame.clone(),
+        ended: AtomicUsize::new(0),
     };
     let stages = pipeline::run(job, &events, first)?;
     let mut summary = events
@@ -905,12 +911,13 @@ pub fn run_with_progress(
 /// The lines a run prints on standard output as frames finish: those
 /// `--progress` asks for, else a line per frame when standard output is not
 /// a terminal (a log, a farm), --quiet or not; none with --json, whose
-/// standard output is its summary.
+/// standard output is its summary, nor for a front end that shows its own
+/// (`on_frame`: the Python package's host owns its standard output).
 fn farm_log(run: &RunArgs) -> Option<FarmLog> {
     use std::io::IsTerminal;
     match run.progress {
         Some(log) => Some(log),
-        None if run.json || std::io::stdout().is_terminal() => None,
+        None if run.json || run.on_frame.is_some() || std::io::stdout().is_terminal() => None,
         None => Some(FarmLog::Frames),
     }
 }
@@ -924,6 +931,9 @@ struct Progress<'a> {
     warnings: Vec<String>,
     warned: std::sync::Once,
     summary: Mutex<Summary>,
+    /// `RunArgs::on_frame`, and the frames ended so far.
+    on_frame: Option<FrameHook>,
+    ended: AtomicUsize,
 }
 
 impl Progress<'_> {
@@ -931,6 +941,10 @@ impl Progress<'_> {
         let label = self.job.frame_label(frame);
         self.report
             .frame(label, outcome, &self.job.output.path(frame));
+        if let Some(hook) = &self.on_frame {
+            let ended = self.ended.fetch_add(1, Ordering::SeqCst) + 1;
+            hook(frame, outcome, ended, self.job.frames.len());
+        }
     }
 
     /// The run's warnings, printed once a frame is done: a run that fails

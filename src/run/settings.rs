@@ -1,6 +1,6 @@
 //! The run and write settings every job that writes files takes, declared
 //! once: the command line's options are derived from them (clap), and the
-//! job file's write keys are their names (src/cli/job_file.rs).
+//! job file's write keys are their names (src/run/job_file.rs).
 
 pub use crate::io::header_text::CompressionName;
 use crate::params::*;
@@ -119,11 +119,20 @@ pub struct RunArgs {
     /// boundaries; the default sizes strips by bytes).
     #[arg(long, hide = true)]
     pub strip_rows: Option<usize>,
+    /// Told of each frame as it ends, for a front end's own progress (the
+    /// Python package's): no option.
+    #[arg(skip)]
+    pub on_frame: Option<FrameHook>,
 }
+
+/// Called with a frame, what became of it, and how many of the run's
+/// frames have ended, of how many (a frame the engine thread finished).
+pub type FrameHook =
+    std::sync::Arc<dyn Fn(i64, crate::run::report::Outcome, usize, usize) + Send + Sync>;
 
 /// How the output is written: the options of every job that writes files,
 /// and the keys of a job file's write node, which are their names with `_`
-/// (src/cli/job_file.rs). The command line's win over the job file's.
+/// (src/run/job_file.rs). The command line's win over the job file's.
 #[derive(Args, Clone, Default)]
 pub struct WriteArgs {
     /// Output compression (each command's help lists the names and says

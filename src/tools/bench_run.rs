@@ -43,8 +43,9 @@ impl TimedCommand {
             .collect();
         let mut output = task.files.iter().find(|f| f.1 == Flow::Out).map(|f| f.0);
         if subcommand == "run" {
-            let (plan, _) = crate::cli::commands::load_job(
+            let (plan, _) = crate::run::job_run::load_job(
                 Path::new(&inputs[0]),
+                None,
                 None,
                 &crate::run::settings::RunArgs::none(),
             )?;

@@ -28,9 +28,9 @@ struct JobToml {
 type Table = BTreeMap<Spanned<String>, Spanned<Value>>;
 
 /// The keys every node or kind of node takes besides an operation's own.
-const NODE_KEYS: &[&str] = &["name", "inputs"];
-const READ_KEYS: &[&str] = &["read", "part", "offset", "hold"];
-const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
+pub const NODE_KEYS: &[&str] = &["name", "inputs"];
+pub const READ_KEYS: &[&str] = &["read", "part", "offset", "hold"];
+pub const LAYER_KEYS: &[&str] = &["layers", "all_layers", "view"];
 
 /// A job file turned into what the engine runs.
 pub struct JobFileContents {
@@ -65,7 +65,7 @@ pub struct Reaching {
 }
 
 /// The first pass that measures an op node's parameters from the read
-/// that reaches it (src/cli/commands.rs: `Operation::measure` on a job of
+/// that reaches it (src/run/job_run.rs: `Operation::measure` on a job of
 /// that read).
 pub type FirstPass<'a> = dyn Fn(&'static Operation, &Args, &Reaching) -> Result<Measured> + 'a;
 
@@ -114,12 +114,24 @@ impl<'a> Source<'a> {
     }
 }
 
-/// The job file at `path`, its operations' lengths in pixels scaled by
-/// `proxy` when it is given, its nodes' measured parameters by `measure`.
-pub fn load(path: &Path, proxy: Option<f32>, measure: &FirstPass) -> Result<JobFileContents> {
-    let text = crate::io::reader::open_regular(path)
-        .and_then(std::io::read_to_string)
-        .map_err(|e| Error::usage(format!("{}: cannot read the job file: {e}", path.display())))?;
+/// The job file at `path` (or `text`, a job given as text by a front end:
+/// `path` then names it in messages, and relative file names start from
+/// its folder), its operations' lengths in pixels scaled by `proxy` when it
+/// is given, its nodes' measured parameters by `measure`.
+pub fn load(
+    path: &Path,
+    text: Option<&str>,
+    proxy: Option<f32>,
+    measure: &FirstPass,
+) -> Result<JobFileContents> {
+    let text = match text {
+        Some(text) => text.to_string(),
+        None => crate::io::reader::open_regular(path)
+            .and_then(std::io::read_to_string)
+            .map_err(|e| {
+                Error::usage(format!("{}: cannot read the job file: {e}", path.display()))
+            })?,
+    };
     let at = Source {
         proxy,
         ..Source::new(path, &text)
