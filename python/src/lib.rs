@@ -52,7 +52,12 @@ fn info(py: Python<'_>, path: PathBuf) -> PyResult<String> {
 /// The command line `args` (its program name first) run as the `exrcomp`
 /// command runs it; the exit code.
 #[pyfunction]
-fn main(py: Python<'_>, args: Vec<String>) -> i32 {
+#[pyo3(signature = (args, exe=None))]
+fn main(py: Python<'_>, args: Vec<String>, exe: Option<std::path::PathBuf>) -> i32 {
+    // bench and farm start exrcomp again: the script, not the interpreter.
+    if let Some(exe) = exe {
+        exrcomp::run::set_own_exe(exe);
+    }
     py.detach(|| exrcomp::cli::program::main(args))
 }
 

@@ -75,3 +75,18 @@ def test_sigint_keeps_complete_frames_and_no_temporaries(plates, tmp_path):
     assert len(reported) <= len(files) < 1000
     for name in files:
         exrcomp.info(out / name)  # every chunk decodes
+
+
+def test_the_installed_command_names_itself_to_a_farm(plates, tmp_path):
+    # farm (and bench) start exrcomp again: the wheel's script, whose
+    # process is Python, must name the script, not the interpreter.
+    script = os.path.join(os.path.dirname(sys.executable), "exrcomp")
+    assert os.path.exists(script), "the wheel puts exrcomp beside python"
+    job = tmp_path / "job.json"
+    subprocess.run([script, "farm", "openjd", "--threads", "1", "--frames", "1-2",
+                    "-o", str(job), "--", "over", str(plates / "fg.####.exr"),
+                    str(plates / "bg.####.exr"), "-o", str(tmp_path / "c.####.exr")],
+                   check=True, capture_output=True)
+    text = job.read_text()
+    assert os.path.abspath(script) in text, text
+    assert os.path.realpath(sys.executable) not in text, text

@@ -1004,3 +1004,22 @@ impl Events for Progress<'_> {
         self.report(frame, Outcome::Failed);
     }
 }
+
+/// The command that runs this exrcomp, for what starts it again (bench's
+/// runs, a farm's tasks): this executable, or the one a front end that
+/// runs inside another program set (the Python package's `exrcomp`
+/// script, whose process is the Python interpreter).
+pub fn own_exe() -> Result<std::path::PathBuf> {
+    if let Some(exe) = OWN_EXE.get() {
+        return Ok(exe.clone());
+    }
+    std::env::current_exe()
+        .map_err(|e| Error::internal(format!("cannot find exrcomp's own path: {e}")))
+}
+
+/// Sets what `own_exe` gives, once a process (later calls change nothing).
+pub fn set_own_exe(exe: std::path::PathBuf) {
+    let _ = OWN_EXE.set(exe);
+}
+
+static OWN_EXE: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();

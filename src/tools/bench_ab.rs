@@ -4,7 +4,8 @@
 
 use crate::cli::BenchArgs;
 use crate::error::Result;
-use crate::tools::bench_run::{figure, own_exe, summarise, Runner, TimedCommand};
+use crate::run::own_exe;
+use crate::tools::bench_run::{figure, summarise, Runner, TimedCommand};
 use crate::tools::bench_stats::{difference, paired, Difference, Paired};
 use serde_json::{json, Value};
 use std::path::Path;

@@ -260,12 +260,6 @@ impl Runner<'_> {
     }
 }
 
-/// This exrcomp's own path, which the runs start again.
-pub fn own_exe() -> Result<PathBuf> {
-    std::env::current_exe()
-        .map_err(|e| Error::internal(format!("cannot find exrcomp's own path: {e}")))
-}
-
 /// Statistics of one figure of `runs`, with the runs' values.
 pub fn figure(runs: &[Run], f: fn(&Run) -> f64) -> Value {
     let values: Vec<f64> = runs.iter().map(f).collect();

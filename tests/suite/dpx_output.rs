@@ -249,7 +249,12 @@ fn a_failed_or_interrupted_frame_leaves_nothing() {
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
-    std::thread::sleep(Duration::from_millis(400));
+    // Signalled while the frame is being written: once its temporary is there.
+    let writing = || outputs(d).iter().any(|n| n.ends_with(".tmp"));
+    let start = std::time::Instant::now();
+    while !writing() && start.elapsed() < Duration::from_secs(30) {
+        std::thread::sleep(Duration::from_millis(1));
+    }
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()

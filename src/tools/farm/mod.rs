@@ -248,7 +248,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     if !dry.others.is_empty() {
         eprintln!("exrcomp: warning: {}", crate::run::others_made(&dry.others));
     }
-    let exrcomp = this_exrcomp()?;
+    let exrcomp = crate::run::own_exe()?;
     let name = job
         .name
         .clone()
@@ -385,12 +385,6 @@ fn shell_quote(arg: &str) -> String {
         true => arg.to_string(),
         false => format!("'{}'", arg.replace('\'', r"'\''")),
     }
-}
-
-/// This executable, for the template's command.
-pub fn this_exrcomp() -> Result<PathBuf> {
-    std::env::current_exe()
-        .map_err(|e| Error::internal(format!("cannot find exrcomp's own path: {e}")))
 }
 
 #[cfg(test)]
