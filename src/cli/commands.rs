@@ -13,9 +13,7 @@ use crate::ops::sources::plate::Plate;
 use crate::run::job_run::run_file;
 use crate::run::report::Summary;
 use crate::run::settings::{LayerArgs, RunArgs};
-use crate::run::{
-    check_frame_count, frame_list, input_job, plate_job, run_job, DryRun, JobInputs,
-};
+use crate::run::{check_frame_count, frame_list, input_job, plate_job, run_job, DryRun, JobInputs};
 use std::path::{Path, PathBuf};
 
 /// Runs frame-writing `command`; a dry run gives what it found.
