@@ -82,11 +82,11 @@ def test_the_installed_command_names_itself_to_a_farm(plates, tmp_path):
     # process is Python, must name the script, not the interpreter.
     script = os.path.join(os.path.dirname(sys.executable), "exrcomp")
     assert os.path.exists(script), "the wheel puts exrcomp beside python"
-    job = tmp_path / "job.json"
+    bundle = tmp_path / "bundle"
     subprocess.run([script, "farm", "openjd", "--threads", "1", "--frames", "1-2",
-                    "-o", str(job), "--", "over", str(plates / "fg.####.exr"),
+                    "--bundle", str(bundle), "--", "over", str(plates / "fg.####.exr"),
                     str(plates / "bg.####.exr"), "-o", str(tmp_path / "c.####.exr")],
                    check=True, capture_output=True)
-    text = job.read_text()
+    text = (bundle / "parameter_values.json").read_text()
     assert os.path.abspath(script) in text, text
     assert os.path.realpath(sys.executable) not in text, text
