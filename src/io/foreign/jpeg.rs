@@ -10,7 +10,7 @@
 //! specs/file-format.md, "JPEG".
 
 use super::raw::widened;
-use super::stream::Stream;
+use super::stream::{InOrder, Stream};
 use super::{Foreign, Format, Rows};
 use exr::meta::attribute::{AttributeValue, SampleType};
 use mozjpeg::decompress::DecompressStarted;
@@ -21,7 +21,6 @@ use std::io::BufReader;
 use std::ops::Range;
 use std::os::raw::c_int;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
-use std::sync::Mutex;
 
 /// The stream's read buffer.
 const BUFFER: usize = 64 << 10;
@@ -37,13 +36,6 @@ struct Decoder(Started);
 // SAFETY: see `Decoder`: nothing in it is tied to a thread.
 unsafe impl Send for Decoder {}
 
-/// The decoder positioned at row `next` (none before the first read, or
-/// after a failed one: it starts over).
-struct State {
-    decoder: Option<Decoder>,
-    next: usize,
-}
-
 struct Jpeg {
     width: usize,
     height: usize,
@@ -51,7 +43,7 @@ struct Jpeg {
     out: J_COLOR_SPACE,
     /// The bytes libjpeg keeps while rows are read (`resident`).
     working: u64,
-    state: Mutex<State>,
+    rows: InOrder<Decoder>,
 }
 
 /// libjpeg's message for the error or warning it is raising.
@@ -317,10 +309,7 @@ pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
         height,
         out,
         working,
-        state: Mutex::new(State {
-            decoder: None,
-            next: 0,
-        }),
+        rows: InOrder::new(None),
     };
     Ok(Foreign {
         format: Format::Jpeg,
@@ -370,48 +359,22 @@ impl Jpeg {
             .map(Decoder)
             .map_err(|e| format!("its image data does not decode (damaged or cut short): {e}"))
     }
-
-    fn decode(
-        &self,
-        state: &mut State,
-        file: &File,
-        rows: Range<usize>,
-    ) -> Result<Vec<u8>, String> {
-        if state.decoder.is_none() || rows.start < state.next {
-            state.decoder = None;
-            state.decoder = Some(self.start(file)?);
-            state.next = 0;
-        }
-        let decoder = state.decoder.as_mut().expect("a decoder");
-        let out_row = if self.components() == 1 { 1 } else { 3 } * self.width * 2;
-        let mut out = vec![0u8; rows.len() * out_row];
-        let mut row = vec![0u8; self.width * self.components()];
-        while state.next < rows.end {
-            guarded(|| decoder.0.read_scanlines_into(&mut row).map(|_| ())).map_err(|e| {
-                format!("its image data does not decode (damaged or cut short): {e}")
-            })?;
-            if state.next >= rows.start {
-                let k = state.next - rows.start;
-                self.convert(&row, &mut out[k * out_row..(k + 1) * out_row]);
-            }
-            state.next += 1;
-        }
-        Ok(out)
-    }
 }
 
 impl Rows for Jpeg {
     fn read(&self, file: &File, rows: Range<usize>) -> Result<Vec<u8>, String> {
-        if rows.start >= rows.end || rows.end > self.height {
-            return Err(format!("rows {rows:?} are outside the image"));
-        }
-        let mut state = self.state.lock().unwrap_or_else(|e| e.into_inner());
-        let decoded = self.decode(&mut state, file, rows);
-        if decoded.is_err() {
-            // Start over at the next read rather than continue a broken stream.
-            state.decoder = None;
-        }
-        decoded
+        let row_bytes = if self.components() == 1 { 1 } else { 3 } * self.width * 2;
+        let mut row = vec![0u8; self.width * self.components()];
+        let next = |decoder: &mut Decoder, out: Option<&mut [u8]>| {
+            guarded(|| decoder.0.read_scanlines_into(&mut row).map(|_| ())).map_err(|e| {
+                format!("its image data does not decode (damaged or cut short): {e}")
+            })?;
+            if let Some(out) = out {
+                self.convert(&row, out);
+            }
+            Ok(())
+        };
+        (self.rows).read(rows, (self.height, row_bytes), || self.start(file), next)
     }
 
     fn sequential(&self) -> bool {

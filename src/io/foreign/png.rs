@@ -6,14 +6,13 @@
 //! space a string attribute. specs/file-format.md, "PNG".
 
 use super::raw::widened;
-use super::stream::Stream;
+use super::stream::{InOrder, Stream};
 use super::{sorted_components, Foreign, Format, Rows};
 use exr::meta::attribute::{AttributeValue, SampleType};
 use png::{BitDepth, Transformations};
 use std::fs::File;
 use std::io::BufReader;
 use std::ops::Range;
-use std::sync::Mutex;
 
 /// The stream's read buffer.
 const BUFFER: usize = 64 << 10;
@@ -22,13 +21,6 @@ const BUFFER: usize = 64 << 10;
 const INFLATE_RATIO: u64 = 1032;
 
 type Reader = png::Reader<BufReader<Stream>>;
-
-/// The reader positioned at row `next` (none before the first read after a
-/// failed one: it starts over).
-struct State {
-    reader: Option<Reader>,
-    next: usize,
-}
 
 struct Png {
     width: usize,
@@ -43,7 +35,7 @@ struct Png {
     /// The file's gamma as OpenImageIO rounds it (1 without gAMA): how alpha
     /// is associated.
     gamma: f32,
-    state: Mutex<State>,
+    rows: InOrder<Reader>,
 }
 
 /// A reader of `file` past its header, expanding palettes, transparency
@@ -112,10 +104,7 @@ pub fn open(file: &File, len: u64) -> Result<Foreign, String> {
         channels: sorted_components(names),
         sample,
         gamma,
-        state: Mutex::new(State {
-            reader: Some(reader),
-            next: 0,
-        }),
+        rows: InOrder::new(Some(reader)),
     };
     Ok(Foreign {
         format: Format::Png,
@@ -258,47 +247,22 @@ impl Png {
             }
         }
     }
-
-    fn decode(
-        &self,
-        state: &mut State,
-        file: &File,
-        rows: Range<usize>,
-    ) -> Result<Vec<u8>, String> {
-        if state.reader.is_none() || rows.start < state.next {
-            state.reader = Some(reader(file)?);
-            state.next = 0;
-        }
-        let reader = state.reader.as_mut().expect("a reader");
-        let out_row = self.channels.len() * self.width * self.sample.bytes_per_sample();
-        let mut out = vec![0u8; rows.len() * out_row];
-        while state.next < rows.end {
-            let row = reader
-                .next_row()
-                .map_err(|e| format!("its image data does not decode (damaged or cut short): {e}"))?
-                .ok_or("its image data ends before its last row")?;
-            if state.next >= rows.start {
-                let k = state.next - rows.start;
-                self.convert(row.data(), &mut out[k * out_row..(k + 1) * out_row]);
-            }
-            state.next += 1;
-        }
-        Ok(out)
-    }
 }
 
 impl Rows for Png {
     fn read(&self, file: &File, rows: Range<usize>) -> Result<Vec<u8>, String> {
-        if rows.start >= rows.end || rows.end > self.height {
-            return Err(format!("rows {rows:?} are outside the image"));
-        }
-        let mut state = self.state.lock().unwrap_or_else(|e| e.into_inner());
-        let decoded = self.decode(&mut state, file, rows);
-        if decoded.is_err() {
-            // Start over at the next read rather than continue a broken stream.
-            state.reader = None;
-        }
-        decoded
+        let row_bytes = self.channels.len() * self.width * self.sample.bytes_per_sample();
+        let next = |reader: &mut Reader, out: Option<&mut [u8]>| {
+            let row = reader
+                .next_row()
+                .map_err(|e| format!("its image data does not decode (damaged or cut short): {e}"))?
+                .ok_or("its image data ends before its last row")?;
+            if let Some(out) = out {
+                self.convert(row.data(), out);
+            }
+            Ok(())
+        };
+        (self.rows).read(rows, (self.height, row_bytes), || reader(file), next)
     }
 
     fn sequential(&self) -> bool {
