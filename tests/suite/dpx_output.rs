@@ -5,10 +5,10 @@
 //! frame rate read back by oiiotool; --resume, interruptions, failures and
 //! refusals.
 
-use crate::common::{exrcomp, ok, peer, run, s, stderr, write_flat, Samples};
+use crate::common::{ok, peer, run, s, signal, started, stderr, write_flat, Samples};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 use std::time::Duration;
 
 /// Where the pixels start in exrcomp's and oiiotool's DPX files.
@@ -235,30 +235,22 @@ fn a_failed_or_interrupted_frame_leaves_nothing() {
     let big = d.join("big.exr");
     crate::common::generate(&big, "bg", (4096, 2048), &[]);
     let target = d.join("out.big.dpx");
-    let mut child = exrcomp()
-        .args([
-            "transcode",
-            s(&big),
-            "-o",
-            s(&target),
-            "-q",
-            "--strip-rows",
-            "1",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+    let mut child = started(&[
+        "transcode",
+        s(&big),
+        "-o",
+        s(&target),
+        "-q",
+        "--strip-rows",
+        "1",
+    ]);
     // Signalled while the frame is being written: once its temporary is there.
     let writing = || outputs(d).iter().any(|n| n.ends_with(".tmp"));
     let start = std::time::Instant::now();
     while !writing() && start.elapsed() < Duration::from_secs(30) {
         std::thread::sleep(Duration::from_millis(1));
     }
-    Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
+    signal(&child, "-INT");
     let status = child.wait().unwrap();
     assert_eq!(status.code(), Some(130), "finished before the signal");
     assert_eq!(outputs(d), ["out.0001.dpx"]);

@@ -231,6 +231,27 @@ fn assert_reads(dpx: &Dpx, exr: &Path, what: &str) {
     }
 }
 
+/// Operations that read rows above their own (a blur) or all of them (a
+/// quarter turn) read `foreign` as they read `exr`, the EXR made of it
+/// (outputs in `dir`).
+pub fn reads_as_its_exr(dir: &Path, foreign: &Path, exr: &Path) {
+    for args in [
+        vec!["blur", "--radius", "5"],
+        vec!["transform", "--rotate", "90"],
+    ] {
+        let from = |input: &Path, name: &str| {
+            let output = dir.join(name);
+            let mut all = vec![args[0], s(input), "-o", s(&output), "-q"];
+            all.extend(&args[1..]);
+            let out = run(&all);
+            assert!(out.status.success(), "{}", stderr(&out));
+            read_image(&output)
+        };
+        let ours = from(foreign, "from-foreign.exr");
+        crate::common::assert_identical(&ours, &from(exr, "from-exr.exr"));
+    }
+}
+
 /// `oiiotool IN -d half|float -o REF` and `idiff -fail 0 REF OURS`, when
 /// both peers are installed.
 pub fn assert_as_oiiotool(input: &Path, ours: &Path, float: bool) {

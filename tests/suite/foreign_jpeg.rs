@@ -268,21 +268,7 @@ fn a_jpeg_sequence_and_a_jpeg_job_read_every_row_in_order() {
     // A blur reads rows above its own, a quarter turn all of them: the
     // JPEG reads as the EXR made of it.
     let exr = dir.path().join("out.0002.exr");
-    for args in [
-        vec!["blur", "--radius", "5"],
-        vec!["transform", "--rotate", "90"],
-    ] {
-        let from = |input: &Path, name: &str| {
-            let output = dir.path().join(name);
-            let mut all = vec![args[0], s(input), "-o", s(&output), "-q"];
-            all.extend(&args[1..]);
-            let out = run(&all);
-            assert!(out.status.success(), "{}", stderr(&out));
-            read_image(&output)
-        };
-        let ours = from(&frame(2, "jpg"), "from-jpeg.exr");
-        crate::common::assert_identical(&ours, &from(&exr, "from-exr.exr"));
-    }
+    crate::foreign_inputs::reads_as_its_exr(dir.path(), &frame(2, "jpg"), &exr);
 }
 
 /// `bytes` with its frame header's (SOF0 or SOF2) height and width set.

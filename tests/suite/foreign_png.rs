@@ -5,7 +5,7 @@
 //! shared PNGs against oiiotool, a sequence and a job, and damaged files
 //! refused in one line with nothing written.
 
-use crate::common::{read_image, run, s, stderr, Samples};
+use crate::common::{read_image, run, s, Samples};
 use crate::foreign_inputs::{
     assert_as_oiiotool, assert_refused, foreign_images, shared_files_as_oiiotool, transcode,
 };
@@ -248,21 +248,7 @@ fn a_png_sequence_and_a_png_job_read_every_row_in_order() {
     // (a quarter turn) read the PNG as they read the EXR made of it.
     let png = dir.path().join("ref.1.png");
     let exr = dir.path().join("out.1.exr");
-    for args in [
-        vec!["blur", "--radius", "5"],
-        vec!["transform", "--rotate", "90"],
-    ] {
-        let from = |input: &Path, name: &str| {
-            let output = dir.path().join(name);
-            let mut all = vec![args[0], s(input), "-o", s(&output), "-q"];
-            all.extend(&args[1..]);
-            let out = run(&all);
-            assert!(out.status.success(), "{}", stderr(&out));
-            read_image(&output)
-        };
-        let ours = from(&png, "from-png.exr");
-        crate::common::assert_identical(&ours, &from(&exr, "from-exr.exr"));
-    }
+    crate::foreign_inputs::reads_as_its_exr(dir.path(), &png, &exr);
     for (k, png) in frames.iter().enumerate() {
         let img = read_image(&dir.path().join(format!("out.{}.exr", 1 + k)));
         for (component, channel) in ["R", "G", "B", "A"].iter().enumerate() {

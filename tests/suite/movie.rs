@@ -4,10 +4,10 @@
 //! movie placed only when whole (killed runs, a missing ffmpeg), --resume,
 //! job files and farms.
 
-use crate::common::{exrcomp, generate, peer, run, s, stderr};
+use crate::common::{exrcomp, generate, peer, run, s, started, stderr};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 use std::time::{Duration, Instant};
 
 /// ffmpeg and ffprobe, or `None` (a skipped check; a failure in CI).
@@ -311,20 +311,16 @@ fn a_movie_killed_mid_run_leaves_nothing_at_its_output() {
     let input = plates(d, "bg", (640, 360));
     let output = d.join("m.mov");
     for signal in ["-INT", "-TERM", "-KILL"] {
-        let mut child = exrcomp()
-            .args([
-                "transcode",
-                s(&input),
-                "-o",
-                s(&output),
-                "-q",
-                "--strip-rows",
-                "1",
-            ])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap();
+        let args = [
+            "transcode",
+            s(&input),
+            "-o",
+            s(&output),
+            "-q",
+            "--strip-rows",
+            "1",
+        ];
+        let mut child = started(&args);
         // Once ffmpeg writes the movie's temporary file (and a frame more).
         let start = Instant::now();
         while !left(d).iter().any(|n| n.starts_with(".m.mov.exrcomp-")) {
@@ -335,10 +331,7 @@ fn a_movie_killed_mid_run_leaves_nothing_at_its_output() {
             std::thread::sleep(Duration::from_millis(5));
         }
         std::thread::sleep(Duration::from_millis(100));
-        let kill = Command::new("kill")
-            .args([signal, &child.id().to_string()])
-            .status();
-        assert!(kill.unwrap().success());
+        crate::common::signal(&child, signal);
         let status = child.wait().unwrap();
         assert!(
             !status.success(),

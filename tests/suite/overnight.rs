@@ -281,22 +281,17 @@ fn resume_redoes_only_missing_or_damaged_outputs() {
 /// Starts a 30-frame transcode, sends it `signals` (5 ms apart) after
 /// `after`, and returns its exit status.
 fn interrupted_run(d: &Path, signals: &[&str], after: Duration) -> std::process::ExitStatus {
-    let mut child = exrcomp()
-        .args([
-            "transcode",
-            s(&d.join("in.####.exr")),
-            "-o",
-            s(&d.join("o/t.####.exr")),
-            "-q",
-            "--compression",
-            "piz",
-            "--strip-rows",
-            "1",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+    let mut child = started(&[
+        "transcode",
+        s(&d.join("in.####.exr")),
+        "-o",
+        s(&d.join("o/t.####.exr")),
+        "-q",
+        "--compression",
+        "piz",
+        "--strip-rows",
+        "1",
+    ]);
     std::thread::sleep(after);
     for signal in signals {
         Command::new("kill")

@@ -73,7 +73,7 @@ fn blocks_under_a_transparent_foreground_are_the_backgrounds_chunks() {
     );
     // The same merge as a job file node.
     let job = d.join("over.toml");
-    std::fs::write(&job, job_file(&["a", "b"])).unwrap();
+    std::fs::write(&job, job_file("over", &["a", "b"])).unwrap();
     check_run(&["run", s(&job)]);
     assert_eq!(chunks(&out), ours, "the job file writes the same bytes");
 
@@ -125,15 +125,21 @@ fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
     let b = random_rgba(8, 0, 0, WIDTH, HEIGHT, Kind::Half, true);
     write(d, "a.0001.exr", &a);
     let bg = write(d, "b.0001.exr", &b);
-    // Flip a byte inside chunk 0's deflate stream (after its 8-byte header):
-    // the chunk still has its size, only decompressing finds the damage.
-    let file = ExrFile::open(&bg, None).unwrap();
+    over_of_a_damaged_b_is_refused(d, &bg);
+}
+
+/// With `bg` (`d/b.0001.exr`) damaged inside chunk 0's deflate stream
+/// (after its 8-byte header: the chunk still has its size, only
+/// decompressing finds the damage), `over a.#### b.####` exits 3 naming the
+/// file, frame and chunk, and writes nothing.
+pub fn over_of_a_damaged_b_is_refused(d: &Path, bg: &Path) {
+    let file = ExrFile::open(bg, None).unwrap();
     let at = file.chunk_range(0, 0);
     drop(file);
-    let mut bytes = std::fs::read(&bg).unwrap();
+    let mut bytes = std::fs::read(bg).unwrap();
     let middle = (at.start + 8 + (at.end - at.start - 8) / 2) as usize;
     bytes[middle] ^= 0x5a;
-    std::fs::write(&bg, bytes).unwrap();
+    std::fs::write(bg, bytes).unwrap();
     let out = run(&[
         "over",
         s(&d.join("a.####.exr")),
@@ -153,8 +159,9 @@ fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
     );
 }
 
-/// A job file writing `over` of nodes `inputs` (reading NAME.exr) to out.exr.
-fn job_file(inputs: &[&str]) -> String {
+/// A job file writing merge `op` of nodes `inputs` (reading NAME.exr) to
+/// out.exr.
+pub fn job_file(op: &str, inputs: &[&str]) -> String {
     let mut names = inputs.to_vec();
     names.dedup();
     let reads: String = names
@@ -162,7 +169,7 @@ fn job_file(inputs: &[&str]) -> String {
         .map(|n| format!("[[node]]\nname = \"{n}\"\nread = \"{n}.exr\"\n\n"))
         .collect();
     format!(
-        "{reads}[[node]]\nname = \"comp\"\nop = \"over\"\ninputs = [\"{}\", \"{}\"]\n\n\
+        "{reads}[[node]]\nname = \"comp\"\nop = \"{op}\"\ninputs = [\"{}\", \"{}\"]\n\n\
          [[node]]\nname = \"out\"\nwrite = \"out.exr\"\ninputs = [\"comp\"]\n",
         inputs[0], inputs[1]
     )
@@ -175,7 +182,7 @@ fn one_input_on_both_sides_of_a_merge_is_composited_not_passed() {
     let img = sparse(9, 20..35);
     write(d, "b.exr", &img);
     let job = d.join("self.toml");
-    std::fs::write(&job, job_file(&["b", "b"])).unwrap();
+    std::fs::write(&job, job_file("over", &["b", "b"])).unwrap();
     check_run(&["run", s(&job)]);
     let reference = reference_merge("over", &img, &img, false, 1.0, &[""]);
     assert_identical(&read_image(&d.join("out.exr")), &reference);
@@ -385,7 +392,7 @@ fn a_rename_after_a_merge_still_passes_the_backgrounds_chunks() {
     let img = random_rgba(15, 0, 0, WIDTH, HEIGHT, Kind::Half, false);
     let b = write(d, "b.exr", &img);
     let job = d.join("job.toml");
-    let text = job_file(&["a", "b"]).replace(
+    let text = job_file("over", &["a", "b"]).replace(
         "inputs = [\"comp\"]",
         "inputs = [\"renamed\"]",
     ) + "\n[[node]]\nname = \"renamed\"\nop = \"shuffle\"\nch = \"A,B,G,Y=R\"\ninputs = [\"comp\"]\n";

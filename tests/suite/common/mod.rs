@@ -17,6 +17,21 @@ pub fn exrcomp() -> Command {
     Command::new(env!("CARGO_BIN_EXE_exrcomp"))
 }
 
+/// exrcomp started with `args`, its output thrown away: a run to signal.
+pub fn started(args: &[&str]) -> std::process::Child {
+    let quiet = std::process::Stdio::null;
+    let child = exrcomp().args(args).stdout(quiet()).stderr(quiet()).spawn();
+    child.expect("exrcomp starts")
+}
+
+/// Sends `signal` (`-INT`, `-TERM`, `-KILL`) to `child`.
+pub fn signal(child: &std::process::Child, signal: &str) {
+    let kill = Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status();
+    assert!(kill.unwrap().success(), "kill {signal}");
+}
+
 /// Runs exrcomp with `args`; returns its output.
 pub fn run(args: &[&str]) -> Output {
     exrcomp().args(args).output().expect("exrcomp runs")
