@@ -572,6 +572,15 @@ fn movie(output: &FramePattern, run: &RunArgs) -> Result<(Media, Option<Arc<Movi
             output.display()
         )));
     }
+    // A movie has no frame numbers: a frame left out would shorten it and
+    // shift every later frame's timecode, unseen.
+    if run.missing == crate::engine::sources::MissingPolicy::Skip {
+        return Err(Error::usage(format!(
+            "{}: --missing skip would leave frames out of the movie, unseen \
+             (it has no frame numbers): give --missing hold or --missing black",
+            output.display()
+        )));
+    }
     let movie = Movie::new(&output.path(0), run.write.codec)?;
     Ok((movie.media(run.write.transfer), Some(Arc::new(movie))))
 }

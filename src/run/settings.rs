@@ -192,7 +192,7 @@ pub struct WriteArgs {
     #[arg(help_heading = MEDIA, long, value_enum)]
     pub burn_in_corner: Option<crate::io::burn_in::Corner>,
     /// A review movie's codec: prores (ProRes 422 HQ, .mov's default),
-    /// prores4444 (with alpha), dnxhr (DNxHR HQ) or h264 (.mp4's).
+    /// prores4444 (with alpha), dnxhr (DNxHR 444) or h264 (.mp4's).
     #[arg(help_heading = MEDIA, long, value_enum)]
     pub codec: Option<crate::io::movie::Codec>,
     /// Write a slate first: frame (the shot's first - 1), black, with the
