@@ -17,12 +17,15 @@ writes, byte for byte.
 import json as _json
 import keyword as _keyword
 import math as _math
+import os as _os
+import shutil as _shutil
+import sys as _sys
 
 from . import _native
 
 __all__ = [
     "Graph", "Node", "info", "Error", "UsageError", "InputError",
-    "OutputError", "InternalError", "Interrupted", "REGISTRY",
+    "OutputError", "InternalError", "Interrupted", "Regression", "bench", "REGISTRY",
 ]
 __version__ = _native.VERSION
 
@@ -32,6 +35,7 @@ _OPS = {op["name"]: op for op in REGISTRY["operations"]}
 _READ_KEYS = [k for k in REGISTRY["read_keys"] if k != "read"]
 _WRITE_KEYS = {k["name"]: k for k in REGISTRY["write_keys"]}
 _RUN_KEYS = {k["name"]: k for k in REGISTRY["run_keys"]}
+_BENCH_KEYS = {k["name"]: k for k in REGISTRY["bench_keys"]}
 
 
 class Error(Exception):
@@ -74,9 +78,18 @@ class Interrupted(Error, KeyboardInterrupt):
     exit_code = 130
 
 
+class Regression(Error):
+    """`bench`: a job slower than the baseline or the other build beyond
+    the tolerance and the noise (exit code 1); `record` is the record."""
+
+    def __init__(self, message, record=None):
+        super().__init__(message)
+        self.record = record
+
+
 _CLASSES = {"usage": UsageError, "input": InputError, "output": OutputError,
             "interrupted": Interrupted, "internal": InternalError,
-            "regression": Error}
+            "regression": Regression}
 
 
 def _native_call(function, *args, **kwargs):
@@ -91,6 +104,54 @@ def _native_call(function, *args, **kwargs):
 def info(path):
     """What `exrcomp info --json PATH` prints for one file, as a dict."""
     return _json.loads(_native_call(_native.info, str(path)))
+
+
+def _words(what, keys, settings):
+    """`settings` (keyword arguments) as the command line's options."""
+    words = []
+    for key, value in settings.items():
+        if key not in keys:
+            raise UsageError(f"{what} takes no setting '{key}'" + _suggest(key, list(keys)))
+        if value is None or value is False:
+            continue
+        option = "--" + key.replace("_", "-")
+        if value is True:
+            words.append(option)
+        elif isinstance(value, (list, tuple)):
+            words.append(f"{option}={','.join(map(str, value))}")
+        else:
+            words.append(f"{option}={value}")
+    return words
+
+
+def _own_command():
+    """The wheel's `exrcomp` command (beside this Python, else on PATH)."""
+    beside = _os.path.join(_os.path.dirname(_sys.executable), "exrcomp")
+    found = beside if _os.path.exists(beside) else _shutil.which("exrcomp")
+    if not found:
+        raise UsageError("bench starts the exrcomp command, which is not installed "
+                         "beside this Python or on PATH")
+    return _os.path.abspath(found)
+
+
+def bench(*command, threads=None, **options):
+    """Times `command` as `exrcomp bench` does (each run a process of the
+    `exrcomp` command the wheel installed, beside a floor, in turns) and
+    returns the record `exrcomp bench --json` writes, as a dict. `command`:
+    the words after `exrcomp` (`"over", fg, bg, "-o", "o.####.exr"`), or a
+    job file; none with `standard=True`. Raises `Regression` (the record
+    its `.record`) if a job is slower than `baseline` or `against`.
+    `threads`: the timed runs' worker threads. Options (bench's, `_` for
+    `-`):
+    """
+    words = _words("bench", _BENCH_KEYS, options)
+    if command:
+        words += ["--", *map(_os.fspath, command)]
+    text, regression = _native_call(_native.bench, words, _own_command(), threads)
+    record = _json.loads(text)
+    if regression is not None:
+        raise Regression(regression, record)
+    return record
 
 
 class Node:
@@ -264,20 +325,7 @@ class Graph:
     # Running.
 
     def _settings(self, settings):
-        words = []
-        for key, value in settings.items():
-            if key not in _RUN_KEYS:
-                raise UsageError(f"run takes no setting '{key}'" + _suggest(key, list(_RUN_KEYS)))
-            if value is None or value is False:
-                continue
-            option = "--" + key.replace("_", "-")
-            if value is True:
-                words.append(option)
-            elif isinstance(value, (list, tuple)):
-                words.append(f"{option}={','.join(map(str, value))}")
-            else:
-                words.append(f"{option}={value}")
-        return words
+        return _words("run", _RUN_KEYS, settings)
 
     def _run(self, settings, threads=None, progress=None):
         settings.setdefault("quiet", True)
@@ -336,5 +384,9 @@ def _make_operation(op):
 for _op in REGISTRY["operations"]:
     setattr(Graph, _op["name"], _make_operation(_op))
 
-Graph.run.__doc__ += "\n".join(
-    f"        {k['name']}: {(k['help'] or '').splitlines()[0]}" for k in REGISTRY["run_keys"])
+def _keys_doc(keys, indent):
+    return "\n".join(f"{indent}{k['name']}: {(k['help'] or '').splitlines()[0]}" for k in keys)
+
+
+Graph.run.__doc__ += _keys_doc(REGISTRY["run_keys"], " " * 8)
+bench.__doc__ += _keys_doc(REGISTRY["bench_keys"], " " * 4)

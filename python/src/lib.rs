@@ -1,10 +1,11 @@
 //! The Python package's extension module, `exrcomp._native`: the registry
 //! the package makes its API from (the operations' declarations, the read,
 //! write and run settings), a job run from its text with progress and
-//! KeyboardInterrupt (run.rs), and the command line (`exrcomp` on PATH).
+//! KeyboardInterrupt (run.rs), bench's record (bench.rs), and the command line (`exrcomp` on PATH).
 //! The Python side is python/exrcomp/__init__.py; the design:
 //! specs/python.md.
 
+mod bench;
 mod registry;
 mod run;
 
@@ -80,5 +81,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(registry::registry, m)?)?;
     m.add_function(wrap_pyfunction!(registry::check_param, m)?)?;
     m.add_function(wrap_pyfunction!(run::run_job, m)?)?;
+    m.add_function(wrap_pyfunction!(bench::bench, m)?)?;
     Ok(())
 }

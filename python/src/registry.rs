@@ -1,10 +1,12 @@
 //! The declarations the package's API is made from, as JSON: each
 //! operation (`exrcomp::ops::ALL`: name, help, inputs, parameters with
 //! their help, defaults and choices), the read node's keys, the write
-//! node's (`WriteArgs`, as the job file takes them) and the run's settings
-//! (`RunArgs`' options but the write node's). Nothing here lists an
-//! operation or a setting: a new one in Rust is a new one in Python.
+//! node's (`WriteArgs`, as the job file takes them), the run's settings
+//! (`RunArgs`' options but the write node's) and bench's (`BenchArgs`).
+//! Nothing here lists an operation or a setting: a new one in Rust is a
+//! new one in Python.
 
+use exrcomp::cli::BenchArgs;
 use exrcomp::ops::declare::Operation;
 use exrcomp::run::job_file::{LAYER_KEYS, READ_KEYS};
 use exrcomp::run::settings::{RunArgs, WriteArgs};
@@ -72,8 +74,9 @@ pub fn registry() -> String {
         })
         .collect();
     let ops: Vec<Value> = exrcomp::ops::ALL.iter().map(|op| operation(op)).collect();
+    let bench = options(BenchArgs::augment_args(clap::Command::new("bench")));
     json!({"operations": ops, "read_keys": READ_KEYS, "layer_keys": LAYER_KEYS,
-           "write_keys": write, "run_keys": run})
+           "write_keys": write, "run_keys": run, "bench_keys": bench})
     .to_string()
 }
 

@@ -34,18 +34,23 @@ fn run_args(settings: &[String]) -> Result<RunArgs> {
 }
 
 /// clap's message without its "error: " and usage lines.
-fn first_line(text: &str) -> String {
+pub(crate) fn first_line(text: &str) -> String {
     let line = text.lines().next().unwrap_or_default();
     line.strip_prefix("error: ").unwrap_or(line).to_string()
 }
 
-/// The pool's threads, made once a process: a later run asking for other
-/// counts is refused (rayon's global pool cannot be remade).
+/// The pool's threads, made once a process by its first run (`threads`, or
+/// rayon's default): a later run asking for another count is refused, not
+/// run on the old count (rayon's global pool cannot be remade).
 fn set_threads(threads: Option<usize>) -> Result<()> {
-    let Some(wanted) = threads else { return Ok(()) };
-    exrcomp::params::parse_threads(&wanted.to_string())
-        .map_err(|why| Error::usage(format!("threads: {why}")))?;
+    if let Some(wanted) = threads {
+        exrcomp::params::parse_threads(&wanted.to_string())
+            .map_err(|why| Error::usage(format!("threads: {why}")))?;
+    }
     let made = *THREADS.get_or_init(|| {
+        let Some(wanted) = threads else {
+            return rayon::current_num_threads();
+        };
         let built = rayon::ThreadPoolBuilder::new()
             .num_threads(wanted)
             .build_global();
@@ -54,11 +59,12 @@ fn set_threads(threads: Option<usize>) -> Result<()> {
             Err(_) => rayon::current_num_threads(),
         }
     });
-    match made == wanted {
-        true => Ok(()),
-        false => Err(Error::usage(format!(
-            "threads: this process runs its jobs on {made} threads (set by its first run), not {wanted}"
+    match threads {
+        Some(wanted) if wanted != made => Err(Error::usage(format!(
+            "threads: this process runs its jobs on {made} threads (set by its first run, \
+             once a process), not {wanted}"
         ))),
+        _ => Ok(()),
     }
 }
 

@@ -44,6 +44,8 @@ def test_an_unwritable_output_is_an_output_error(plates, tmp_path):
     with pytest.raises(exrcomp.OutputError) as raised:
         g.run(frames="1")
     assert raised.value.exit_code == 4
+    assert raised.value.file == str(tmp_path / "file" / "c.0001.exr")
+    assert raised.value.frame == 1
 
 
 def test_bad_graphs_and_settings_are_usage_errors(plates, tmp_path):

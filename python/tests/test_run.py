@@ -90,3 +90,38 @@ def test_the_installed_command_names_itself_to_a_farm(plates, tmp_path):
     text = (bundle / "parameter_values.json").read_text()
     assert os.path.abspath(script) in text, text
     assert os.path.realpath(sys.executable) not in text, text
+
+
+THREADS = r"""
+import os, sys, exrcomp
+plates, out = sys.argv[1], sys.argv[2]
+g = exrcomp.Graph()
+g.write(g.read(plates + "/bg.####.exr"), out + "/c.####.exr")
+first = int(sys.argv[3]) if len(sys.argv) > 3 else None
+g.run(frames="1", threads=first)
+g.run(frames="1", threads=first, resume=True)
+g.run(frames="1", resume=True)
+try:
+    g.run(frames="2", threads=3)
+except exrcomp.UsageError as e:
+    print("refused:", e)
+print(sorted(os.listdir(out)))
+"""
+
+
+def test_a_second_thread_count_is_refused_not_ignored(plates, tmp_path):
+    # rayon's pool is made once a process: a run asking another count than
+    # the first run's (or the default pool's) is an error, never the old count.
+    for first, made in (("1", 1), (None, None)):
+        out = tmp_path / f"out{first}"
+        done = subprocess.run([sys.executable, "-c", THREADS, str(plates), str(out),
+                               *([first] if first else [])],
+                              capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        lines = done.stdout.splitlines()
+        made = made or len(os.sched_getaffinity(0))  # rayon's default
+        if made == 3:
+            continue
+        assert lines[0] == (f"refused: threads: this process runs its jobs on {made} "
+                            "threads (set by its first run, once a process), not 3"), done.stdout
+        assert lines[1] == "['c.0001.exr']", done.stdout

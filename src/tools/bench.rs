@@ -261,8 +261,23 @@ fn jobs(args: &BenchArgs) -> Result<Vec<TimedCommand>> {
     }
 }
 
-/// `exrcomp bench`.
+/// A bench's record (what `--json` writes) and its verdict: `Ok`, or the
+/// jobs slower than the baseline or the other build (a `Regression`).
+pub struct Benched {
+    pub record: Value,
+    pub verdict: Result<()>,
+}
+
+/// `exrcomp bench`: a job slower than the baseline or the other build is
+/// its error, after the record and the report are written.
 pub fn bench(args: &BenchArgs) -> Result<()> {
+    record(args)?.verdict
+}
+
+/// The runs `args` ask for, timed: the record, written where `--json` and
+/// `--report` say, and its verdict (the Python package's `exrcomp.bench`
+/// returns the record whatever the verdict).
+pub fn record(args: &BenchArgs) -> Result<Benched> {
     let jobs = jobs(args)?;
     // The record and the chart replace nothing a job reads (checked before
     // the runs, which may take long).
@@ -324,7 +339,7 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
         };
         write_whole(path, &report.file(path))?;
     }
-    match (failures.is_empty(), &args.against) {
+    let verdict = match (failures.is_empty(), &args.against) {
         (true, _) => Ok(()),
         (false, against) => Err(Error::new(
             crate::error::Kind::Regression,
@@ -333,7 +348,8 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
                 None => format!("slower than the baseline: {}", failures.join("; ")),
             },
         )),
-    }
+    };
+    Ok(Benched { record, verdict })
 }
 
 /// Now, in UTC, as `2026-12-03T08:15:00Z`.
