@@ -11,6 +11,7 @@ use crate::io::rows::{Extent, Rows, Samples};
 use crate::io::subsampling;
 use crate::io::tiles::{self, Level};
 use crate::stage_time::{self, Stage};
+use exr::block::chunk::CompressedBlock;
 use exr::block::UncompressedBlock;
 use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
@@ -40,6 +41,11 @@ pub struct InputCursor {
     pub upward: bool,
     /// Set for a deep input: strips come from flattening its samples.
     deep: Option<Arc<DeepInput>>,
+    /// Whether to keep the chunks of a strip decoded straight into its
+    /// planes (`decode_direct`), as read, in `kept`: those that will be
+    /// written as they are (`opaque.rs`), not read twice.
+    pub keep: bool,
+    pub kept: Vec<(usize, CompressedBlock)>,
 }
 
 /// The decode tasks of `jobs` (input, chunk): a chunk each, but one task
@@ -79,6 +85,8 @@ impl InputCursor {
             carried: Vec::new(),
             upward: false,
             deep: None,
+            keep: false,
+            kept: Vec::new(),
         }
     }
 
@@ -197,8 +205,15 @@ pub fn decode_strip(
         let (columns, rows) = &regions[i];
         let strip = match (selected(i), direct[i]) {
             (false, _) => None,
-            (true, true) => Some(input.decode_direct(*columns, rows)?),
-            (true, false) => Some(input.strip(*columns, rows, &mut blocks[i])?),
+            (true, true) => {
+                let (strip, kept) = input.decode_direct(*columns, rows)?;
+                input.kept = kept;
+                Some(strip)
+            }
+            (true, false) => {
+                input.kept.clear();
+                Some(input.strip(*columns, rows, &mut blocks[i])?)
+            }
         };
         strips.push(strip);
     }
@@ -279,8 +294,12 @@ impl InputCursor {
     /// each chunk's bytes are interleaved from its decompressed halves to
     /// their place in the strip (each of its lines, in each plane, clipped to
     /// the strip's columns), with no block buffer, copy or zero fill (see
-    /// `direct`).
-    fn decode_direct(&self, columns: (i32, usize), rows: &Range<i32>) -> Result<Rows> {
+    /// `direct`). With the chunks read, as they are, when `keep` is set.
+    fn decode_direct(
+        &self,
+        columns: (i32, usize),
+        rows: &Range<i32>,
+    ) -> Result<(Rows, Vec<(usize, CompressedBlock)>)> {
         let (file, part, level) = (&self.file, self.part, self.level);
         let header = file.header(part);
         let channels = header.channels.list.to_vec();
@@ -339,12 +358,13 @@ impl InputCursor {
                 assert!(rest.is_empty(), "the blocks cover the strip's columns");
             }
         }
-        tasks.into_par_iter().try_for_each(stage_time::tasks(
+        let keep = self.keep;
+        let kept = tasks.into_par_iter().map(stage_time::tasks(
             Stage::Decode,
             |(k, j, count, mut slices): (usize, usize, usize, ChunkRows)| {
                 let (_, _, skip, block) = spans[j];
                 let line_bytes = header.channels.bytes_per_pixel * block;
-                file.unpack_zip_chunk(part, k, |unpacked| {
+                let (_, packed) = file.unpack_zip_chunk_kept(part, k, |unpacked| {
                     let mut slices = slices.iter_mut();
                     let mut channel_at = 0;
                     for &size in &sizes {
@@ -354,15 +374,21 @@ impl InputCursor {
                         }
                         channel_at += block * size;
                     }
-                })
+                })?;
+                Ok(keep.then_some((k, packed)))
             },
-        ))?;
+        ));
+        let kept: Vec<(usize, CompressedBlock)> = kept
+            .collect::<Result<Vec<_>>>()?
+            .into_iter()
+            .flatten()
+            .collect();
         for plane in &mut planes {
             // SAFETY: the tasks wrote every row of every plane (asserted
             // above: the chunks' rows and columns are exactly the strip's).
             unsafe { plane.set_len(width * height) };
         }
-        Ok(Rows {
+        let strip = Rows {
             extent: Extent {
                 x: columns.0,
                 y: rows.start,
@@ -372,7 +398,8 @@ impl InputCursor {
             },
             channels,
             planes,
-        })
+        };
+        Ok((strip, kept))
     }
 }
 

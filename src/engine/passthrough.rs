@@ -31,7 +31,7 @@ pub struct PassThrough {
     /// input reads, its second input's node, and the merge's pixel (x + dx,
     /// y + dy) that is the output's (x, y). All first inputs must be
     /// transparent black over a block for it to pass.
-    tests: Vec<(usize, usize, usize, (i32, i32))>,
+    tests: Vec<Test>,
     /// The output's pixels that every node from the output down to the
     /// source holds the source's pixels in (inside each crop's window).
     inside: IntegerBounds,
@@ -189,22 +189,9 @@ impl PassThrough {
             // columns `x0..x1` of these rows (a copy of them, for a tile),
             // in the merge's pixels.
             let hidden = |columns: Option<&Range<i32>>| {
-                self.tests.iter().all(|&(merge, first, second, (dx, dy))| {
-                    let Node::Op { op, .. } = &graph.nodes[merge] else {
-                        return false;
-                    };
-                    let strip = strips[first]
-                        .as_ref()
-                        .expect("tested inputs are decoded first");
-                    let (second, rows) = (&plan.channels[second], y0 + dy..y1 + dy);
-                    match columns {
-                        None => op.hides_nothing(strip, second, rows),
-                        Some(x) => {
-                            let copy = strip.copy_region(rows.clone(), x.start + dx..x.end + dx);
-                            op.hides_nothing(&copy, second, rows)
-                        }
-                    }
-                })
+                self.tests
+                    .iter()
+                    .all(|&test| shows_second(plan, graph, strips, test, y0..y1, columns))
             };
             // A whole row of blocks passes at once (every scanline block, and
             // most tile rows under a small element).
@@ -241,6 +228,37 @@ impl PassThrough {
                 Ok(placed(plan, chunk, block))
             })
             .collect()
+    }
+}
+
+/// A merge, the input its first input reads, its second input's node, and
+/// the merge's pixel (x + dx, y + dy) that is the output's (x, y).
+pub(super) type Test = (usize, usize, usize, (i32, i32));
+
+/// Whether merge `test`'s first input (decoded in `strips`) is transparent
+/// black over the output's rows `rows` and columns `columns` (the strip's
+/// all along: `None`), where the merge gives its second input bit for bit.
+pub(super) fn shows_second(
+    plan: &FramePlan,
+    graph: &Graph,
+    strips: &[Option<Rows>],
+    (merge, first, second, (dx, dy)): Test,
+    rows: Range<i32>,
+    columns: Option<&Range<i32>>,
+) -> bool {
+    let Node::Op { op, .. } = &graph.nodes[merge] else {
+        return false;
+    };
+    let strip = strips[first]
+        .as_ref()
+        .expect("tested inputs are decoded first");
+    let (second, rows) = (&plan.channels[second], rows.start + dy..rows.end + dy);
+    match columns {
+        None => op.hides_nothing(strip, second, rows),
+        Some(x) => {
+            let copy = strip.copy_region(rows.clone(), x.start + dx..x.end + dx);
+            op.hides_nothing(&copy, second, rows)
+        }
     }
 }
 

@@ -496,8 +496,21 @@ impl ExrFile {
         index: usize,
         f: impl FnOnce(&zip::Unpacked) -> R,
     ) -> Result<R> {
+        Ok(self.unpack_zip_chunk_kept(part, index, f)?.0)
+    }
+
+    /// As `unpack_zip_chunk`, also giving the chunk as read, so that it can
+    /// be written as it is without being read again.
+    pub fn unpack_zip_chunk_kept<R>(
+        &self,
+        part: usize,
+        index: usize,
+        f: impl FnOnce(&zip::Unpacked) -> R,
+    ) -> Result<(R, CompressedBlock)> {
         let (block, expected) = self.zip_chunk(part, index)?;
-        zip::unpack(packed_pixels(&block), expected, f).map_err(|m| self.undecodable(index, m))
+        let unpacked = zip::unpack(packed_pixels(&block), expected, f)
+            .map_err(|m| self.undecodable(index, m))?;
+        Ok((unpacked, block))
     }
 
     /// Flat chunk `index` of `part` and the bytes it decompresses to.

@@ -3,10 +3,13 @@
 //! foreground (`copy`), the pixels equal the whole composite, the blocks are
 //! the foreground's chunks where its part is laid out as the output, the
 //! background's chunks there are only checked (a damaged one is refused),
-//! and a stack's top layer hides the layers below.
+//! and a stack's layer hides the layers below it: its chunks are the
+//! output's blocks where the layers above it are transparent.
 
 use crate::common::*;
-use crate::passthrough::{check_run, chunks, job_file};
+use crate::passthrough::{
+    a_damaged_chunk_is_refused, check_run, chunks, job_file, same_as_oiiotool,
+};
 use exr::prelude::{Compression, LineOrder};
 use std::path::{Path, PathBuf};
 
@@ -164,4 +167,111 @@ fn a_damaged_background_chunk_under_an_opaque_block_is_refused() {
     );
     // Damaged under A's opaque block 0.
     crate::passthrough::over_of_a_damaged_b_is_refused(d, &bg);
+}
+
+/// How a row of a test layer is made.
+#[derive(Clone, Copy)]
+enum Row {
+    /// Transparent black.
+    Clear,
+    /// Random colours, alpha 1.
+    Opaque,
+    /// As `random_rgba` makes it.
+    Random,
+}
+
+/// A random RGBA image whose row y is made as `row(y)` says.
+fn layer(seed: u64, kind: fn() -> Kind, row: impl Fn(usize) -> Row) -> Img {
+    let mut img = random_rgba(seed, 0, 0, WIDTH, HEIGHT, kind(), false);
+    for y in 0..HEIGHT {
+        for x in 0..WIDTH {
+            let i = img.index(x as i32, y as i32).unwrap();
+            match row(y) {
+                Row::Clear => img.channels.values_mut().for_each(|s| s.set_f32(i, 0.0)),
+                Row::Opaque => img.channels.get_mut("A").unwrap().set_f32(i, 1.0),
+                Row::Random => {}
+            }
+        }
+    }
+    img
+}
+
+/// Blocks of 16 rows. L1: clear but rows 20..40 (blended) and 64..70
+/// (opaque); L2: opaque but rows 40..60 (blended).
+fn stack_layers(kind: fn() -> Kind) -> [Img; 4] {
+    let l1 = layer(10, kind, |y| match y {
+        20..=39 => Row::Random,
+        64.. => Row::Opaque,
+        _ => Row::Clear,
+    });
+    let l2 = layer(11, kind, |y| match y {
+        40..=59 => Row::Random,
+        _ => Row::Opaque,
+    });
+    let random = |seed| random_rgba(seed, 0, 0, WIDTH, HEIGHT, kind(), false);
+    [l1, l2, random(12), random(13)]
+}
+
+#[test]
+fn a_stacks_opaque_middle_layer_hides_the_layers_below_it() {
+    stack_with_an_opaque_middle_layer(|| Kind::Half);
+    stack_with_an_opaque_middle_layer(|| Kind::Float);
+}
+
+fn stack_with_an_opaque_middle_layer(kind: fn() -> Kind) {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let layers = stack_layers(kind);
+    let paths: Vec<PathBuf> = (0..4)
+        .map(|i| write(d, &format!("l{}.exr", i + 1), &layers[i]))
+        .collect();
+    let names: Vec<&str> = paths.iter().map(|p| s(p)).collect();
+    let out = d.join("out.exr");
+    check_run(&[&["stack"], &names[..], &["-o", s(&out)]].concat());
+    let reference = layers[..3]
+        .iter()
+        .rev()
+        .fold(layers[3].clone(), |below, l| {
+            reference_merge("over", l, &below, false, 1.0, &[""])
+        });
+    assert_identical(&read_image(&out), &reference);
+    assert_peers_read(&out);
+    // Block 0: L1 clear over L2 opaque, L2's chunk; block 4: L1 opaque, L1's
+    // (the top layer hiding first); block 1: L1 blended over L2 opaque.
+    assert_eq!(copied(&out, &paths[1]), [true, false, false, false, false]);
+    assert_eq!(copied(&out, &paths[0]), [false, false, false, false, true]);
+    // oiiotool keeps each --over's result in the inputs' type: half
+    // layers' differ from the float composite where two blend.
+    if matches!(kind(), Kind::Float) {
+        let over = ["--over"; 3];
+        same_as_oiiotool(&paths[0], &[&names[1..], &over[..]].concat(), &out);
+    }
+    // An infinity or NaN in L3 under L2's opaque blocks 0 and 1 is not taken.
+    let poison = write(d, "poison.exr", &poisoned(&layers[2], 0..32));
+    let hidden = d.join("hidden.exr");
+    let mut poisoned_names = names.clone();
+    poisoned_names[2] = s(&poison);
+    check_run(&[&["stack"], &poisoned_names[..], &["-o", s(&hidden)]].concat());
+    assert_eq!(
+        chunks(&hidden),
+        chunks(&out),
+        "L3's values under L2 are not read"
+    );
+}
+
+#[test]
+fn a_damaged_chunk_under_a_stacks_opaque_middle_layer_is_refused() {
+    // Chunk 0 of L3 lies under L2's block that passes, chunk 1 under L2's
+    // block that L1 blends over.
+    for chunk in [0, 1] {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        let layers = stack_layers(|| Kind::Half);
+        let paths: Vec<PathBuf> = (0..3)
+            .map(|i| write(d, &format!("l{}.0001.exr", i + 1), &layers[i]))
+            .collect();
+        let sequence = |i: usize| d.join(format!("l{}.####.exr", i + 1));
+        let (l1, l2, l3) = (sequence(0), sequence(1), sequence(2));
+        a_damaged_chunk_is_refused(d, &paths[2], chunk, &["stack", s(&l1), s(&l2), s(&l3)]);
+    }
 }

@@ -133,23 +133,27 @@ fn a_damaged_chunk_that_would_pass_is_refused_naming_file_and_frame() {
 /// decompressing finds the damage), `over a.#### b.####` exits 3 naming the
 /// file, frame and chunk, and writes nothing.
 pub fn over_of_a_damaged_b_is_refused(d: &Path, bg: &Path) {
-    let file = ExrFile::open(bg, None).unwrap();
-    let at = file.chunk_range(0, 0);
+    let (a, b) = (d.join("a.####.exr"), d.join("b.####.exr"));
+    a_damaged_chunk_is_refused(d, bg, 0, &["over", s(&a), s(&b)]);
+}
+
+/// Damages chunk `chunk` of frame 1 `damaged` (in `d`), then checks that
+/// `command` writing out.####.exr in `d` is refused naming the file, the
+/// frame and the chunk, writing nothing.
+pub fn a_damaged_chunk_is_refused(d: &Path, damaged: &Path, chunk: usize, command: &[&str]) {
+    let file = ExrFile::open(damaged, None).unwrap();
+    let at = file.chunk_range(0, chunk);
     drop(file);
-    let mut bytes = std::fs::read(bg).unwrap();
+    let mut bytes = std::fs::read(damaged).unwrap();
     let middle = (at.start + 8 + (at.end - at.start - 8) / 2) as usize;
     bytes[middle] ^= 0x5a;
-    std::fs::write(bg, bytes).unwrap();
-    let out = run(&[
-        "over",
-        s(&d.join("a.####.exr")),
-        s(&d.join("b.####.exr")),
-        "-o",
-        s(&d.join("out.####.exr")),
-    ]);
+    std::fs::write(damaged, bytes).unwrap();
+    let output = d.join("out.####.exr");
+    let out = run(&[command, &["-o", s(&output)]].concat());
     assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
     let message = stderr(&out);
-    let named = ["b.0001.exr", "(frame 1)", "chunk 0"]
+    let name = damaged.file_name().unwrap().to_str().unwrap();
+    let named = [name, "(frame 1)", &format!("chunk {chunk}")]
         .iter()
         .all(|w| message.contains(w));
     assert!(named, "{message}");
