@@ -28,7 +28,7 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// ```text
 /// Σ_inputs D_i + max_inputs Z_i
 ///     + max_live Σ W_n (S_n + 2 h_n) b_n + (4 + c_o + 2 B) S W b_o
-///     + max_n T scratch_n + T codec + Σ_inputs D_i + 10 MiB
+///     + max_n T scratch_n + T codec + Σ_inputs D_i + J + 10 MiB
 /// ```
 ///
 /// with, for a ZIP input, `D_i = max(2 A_i W_i + a_i (A_i + 2 L_i) R_i,
@@ -57,7 +57,9 @@ pub fn band_rows(rows: usize, width: usize) -> usize {
 /// output transforms: `c_i` is 1 for a ZIP input (2 otherwise), `c_o` 0
 /// for a ZIP output (1 otherwise). `D_i` is what a foreign input's row
 /// reader holds (`ExrFile::decoder_bytes`: a TIFF's strip, a PNG's
-/// inflate state and row; 0 for EXR, DPX and Cineon).
+/// inflate state and row; 0 for EXR, DPX and Cineon). `J` is a JPEG
+/// output's bands waiting to be encoded and written (`jpeg_out::resident`;
+/// 0 for other outputs).
 pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
     let graph = plan.graph(job);
     let s = plan.strip_rows.min(plan.computed.size.height()) as u64;
@@ -95,7 +97,13 @@ pub fn memory_bound(plan: &FramePlan, job: &Job) -> u64 {
     let codec = codec_per_thread(plan, job) * threads;
     // A foreign input's row reader (io::foreign::Rows::resident).
     let readers: u64 = plan.inputs.iter().map(|f| f.decoder_bytes()).sum();
-    decode + windows as u64 + encode + scratch + codec + readers + PROGRAM
+    let jpeg = match &job.media {
+        Some(review) if review.media.format == crate::io::media::Format::Jpeg => {
+            crate::io::jpeg_out::resident(width as usize, review.media.quality, s as usize)
+        }
+        _ => 0,
+    };
+    decode + windows as u64 + encode + scratch + codec + readers + jpeg + PROGRAM
 }
 
 fn is_zip(compression: Compression) -> bool {

@@ -3,14 +3,15 @@
 //! each strip of composed rows into display code values (`Media::convert`,
 //! in parallel over rows); the write stage streams them into the format's
 //! encoder (`write_frame`): PNG's zlib stream and TIFF's strips as the rows
-//! arrive, JPEG by rows of MCUs, so memory stays flat in the frame's height.
+//! arrive, JPEG by bands of MCU rows encoded on the pool (`jpeg_out`), so
+//! memory stays flat in the frame's height.
 
 use super::burn_in::Label;
+use super::jpeg_out::{self, JPEG_MAX_SIDE};
 use crate::error::{Error, Result};
 use crate::io::rows::Rows;
 use exr::meta::attribute::IntegerBounds;
 use rayon::prelude::*;
-use std::cell::RefCell;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
@@ -85,9 +86,6 @@ pub enum Transfer {
     /// `ociodisplay`), clamped to 0..1.
     None,
 }
-
-/// The longest side of a JPEG libjpeg reads (jmorecfg.h's JPEG_MAX_DIMENSION).
-const JPEG_MAX_SIDE: usize = 65500;
 
 /// JPEG quality when `--quality` is not given.
 pub const DEFAULT_QUALITY: u8 = 90;
@@ -360,7 +358,17 @@ pub fn write_frame(
     let fail = |e: &dyn std::fmt::Display| Error::output(path, frame, e);
     super::writer::write_in_place(path, frame, |out| match media.format {
         Format::Png => write_png(out, media.bits, size, alpha, note, &mut next, &fail),
-        Format::Jpeg => write_jpeg(out, media.quality, size, note, &mut next, &fail),
+        Format::Jpeg => {
+            let mut lines = || match next()? {
+                Some(Strip {
+                    rows,
+                    samples: Samples::U8(bytes),
+                }) => Ok(Some((rows, bytes))),
+                Some(_) => Err(Error::internal("a JPEG frame's samples are not 8-bit")),
+                None => Ok(None),
+            };
+            jpeg_out::write_jpeg(out, media.quality, size, note, &mut lines, &fail)
+        }
         Format::Tiff => write_tiff(out, media.bits, size, alpha, note, &mut next, &fail),
         Format::Exr | Format::Dpx | Format::Movie => {
             Err(Error::internal("a frame of another format as review media"))
@@ -431,149 +439,6 @@ fn write_png(
     }
     stream.finish().map_err(|e| fail(&e))?;
     writer.finish().map_err(|e| fail(&e))
-}
-
-fn write_jpeg(
-    out: &mut BufWriter<&File>,
-    quality: u8,
-    (width, height): (usize, usize),
-    note: (&str, &str),
-    next: Next,
-    fail: Fail,
-) -> Result<()> {
-    let (Ok(width), Ok(height)) = (u16::try_from(width), u16::try_from(height)) else {
-        return Err(fail(&format!(
-            "{width}x{height} is larger than JPEG's {JPEG_MAX_SIDE} a side"
-        )));
-    };
-    let image = Pulled {
-        width,
-        height,
-        next: RefCell::new(next),
-        strip: RefCell::new((0, Vec::new())),
-        error: RefCell::new(None),
-    };
-    let out = Commented {
-        out,
-        comment: Some(comment(note)),
-    };
-    let mut encoder = jpeg_encoder::Encoder::new(out, quality);
-    // Chroma halved both ways below quality 100, as libjpeg (oiiotool,
-    // cjpeg) does at every quality: the crate's 4:4:4 from quality 90 made
-    // review frames 1.4x oiiotool's at the same quality.
-    if quality < 100 {
-        encoder.set_sampling_factor(jpeg_encoder::SamplingFactor::R_4_2_0);
-    }
-    let encoded = encoder.encode_image(&image);
-    if let Some(e) = image.error.into_inner() {
-        return Err(e);
-    }
-    encoded.map_err(|e| fail(&e))?;
-    // The encoder asks for no row past the last: the end must follow.
-    match (image.next.into_inner())()? {
-        None => Ok(()),
-        Some(_) => Err(Error::internal("more rows than the JPEG's height")),
-    }
-}
-
-/// A JPEG comment (COM) segment holding `key=text`.
-fn comment((key, text): (&str, &str)) -> Vec<u8> {
-    let body = format!("{key}={text}");
-    let length = (body.len() + 2) as u16;
-    [&[0xff, 0xfe], &length.to_be_bytes()[..], body.as_bytes()].concat()
-}
-
-/// The encoder's bytes with a comment segment after its first marker
-/// (start of image): the encoder writes none of its own.
-struct Commented<W: Write> {
-    out: W,
-    comment: Option<Vec<u8>>,
-}
-
-impl<W: Write> Write for Commented<W> {
-    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
-        self.write_all(bytes).map(|()| bytes.len())
-    }
-
-    fn write_all(&mut self, bytes: &[u8]) -> std::io::Result<()> {
-        match self.comment.take() {
-            // The encoder writes its start marker (FF D8) on its own.
-            Some(comment) if bytes.len() >= 2 => {
-                self.out.write_all(&bytes[..2])?;
-                self.out.write_all(&comment)?;
-                self.out.write_all(&bytes[2..])
-            }
-            comment => {
-                self.comment = comment;
-                self.out.write_all(bytes)
-            }
-        }
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        self.out.flush()
-    }
-}
-
-/// The rows of a JPEG frame as its encoder asks for them, a row of MCUs at
-/// a time, pulled from the strips as they arrive: the first row of the
-/// strip held and its 8-bit RGB samples.
-struct Pulled<'a> {
-    width: u16,
-    height: u16,
-    next: RefCell<Next<'a>>,
-    strip: RefCell<(usize, Vec<u8>)>,
-    error: RefCell<Option<Error>>,
-}
-
-impl jpeg_encoder::ImageBuffer for &Pulled<'_> {
-    fn get_jpeg_color_type(&self) -> jpeg_encoder::JpegColorType {
-        jpeg_encoder::JpegColorType::Ycbcr
-    }
-
-    fn width(&self) -> u16 {
-        self.width
-    }
-
-    fn height(&self) -> u16 {
-        self.height
-    }
-
-    fn fill_buffers(&self, y: u16, buffers: &mut [Vec<u8>; 4]) {
-        let row_bytes = self.width as usize * 3;
-        let mut strip = self.strip.borrow_mut();
-        // Past the strip held (the encoder repeats the last row to fill
-        // the last MCU row, so never before it): the next strips.
-        while self.error.borrow().is_none() && y as usize >= strip.0 + strip.1.len() / row_bytes {
-            let first = strip.0 + strip.1.len() / row_bytes;
-            match (self.next.borrow_mut())() {
-                Ok(Some(Strip {
-                    samples: Samples::U8(bytes),
-                    ..
-                })) => *strip = (first, bytes),
-                Ok(_) => {
-                    *self.error.borrow_mut() =
-                        Some(Error::internal("a JPEG frame's rows ended early"))
-                }
-                Err(e) => *self.error.borrow_mut() = Some(e),
-            }
-        }
-        let at = (y as usize).saturating_sub(strip.0) * row_bytes;
-        match strip.1.get(at..at + row_bytes) {
-            Some(row) => {
-                for pixel in row.chunks_exact(3) {
-                    let (luma, cb, cr) = jpeg_encoder::rgb_to_ycbcr(pixel[0], pixel[1], pixel[2]);
-                    buffers[0].push(luma);
-                    buffers[1].push(cb);
-                    buffers[2].push(cr);
-                }
-            }
-            // Failed: the frame is abandoned, the encoder fed zeros.
-            None => buffers[..3]
-                .iter_mut()
-                .for_each(|b| b.extend(std::iter::repeat_n(0, self.width as usize))),
-        }
-    }
 }
 
 /// Rows per TIFF strip.

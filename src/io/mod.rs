@@ -10,6 +10,7 @@ pub mod deflate;
 pub mod dpx_out;
 pub mod foreign;
 pub mod header_text;
+pub mod jpeg_out;
 pub mod limits;
 pub mod media;
 pub mod movie;

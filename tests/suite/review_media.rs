@@ -677,3 +677,97 @@ fn review_jpegs_are_oiiotools_size_and_a_slow_ramp_does_not_band() {
         "longest run {run} px, step {step:.3}"
     );
 }
+
+/// Restart markers (RST0..7) in a JPEG's bytes, by number.
+fn restart_markers(file: &[u8]) -> Vec<u8> {
+    file.windows(2)
+        .filter(|w| w[0] == 0xff && (0xd0..=0xd7).contains(&w[1]))
+        .map(|w| w[1] - 0xd0)
+        .collect()
+}
+
+/// `path` as ffmpeg decodes it (its own JPEG decoder, not libjpeg): RGB
+/// samples, and what it said on stderr.
+fn ffmpeg_decode(ffmpeg: &Path, path: &Path) -> (Vec<u8>, String) {
+    let out = succeed(
+        Command::new(ffmpeg)
+            .args(["-v", "error", "-i"])
+            .arg(path)
+            .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"]),
+    );
+    (
+        out.stdout,
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn jpeg_bands_are_the_same_bytes_at_any_thread_count_and_decode_in_every_reader() {
+    let Some(python) = pillow() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("tall.exr");
+    // Taller than several bands (64 lines at 4:2:0, 32 at 4:4:4), with
+    // detail in every block, not a whole number of MCUs either way.
+    let size = (250, 333);
+    let code = |x: usize, y: usize, c: usize| {
+        let (x, y) = (x as f64, y as f64);
+        127.5 + 110.0 * (x / 9.0 + c as f64).sin() * (y / 7.0 - c as f64).cos()
+    };
+    from_codes(&input, size, code);
+    for (quality, bands) in [("90", 6), ("100", 11)] {
+        let outs = ["1", "2", "8"].map(|t| dir.path().join(format!("t{t}-q{quality}/out.jpg")));
+        for (threads, out) in ["1", "2", "8"].iter().zip(&outs) {
+            let q = ["--quality", quality, "--threads", threads, "-q"];
+            crate::common::ok(&[&["transcode", s(&input), "-o", s(out)][..], &q].concat());
+        }
+        let bytes = std::fs::read(&outs[0]).unwrap();
+        for out in &outs[1..] {
+            assert!(std::fs::read(out).unwrap() == bytes, "{}", out.display());
+        }
+        // A band a restart interval: RST0, RST1... between them, mod 8.
+        let counted: Vec<u8> = (0..bands - 1).map(|n| (n % 8) as u8).collect();
+        assert_eq!(restart_markers(&bytes), counted, "quality {quality}");
+        // Decoded whole by libjpeg (Pillow), ffmpeg's own decoder and
+        // OpenImageIO, alike, and near the codes (a band lost to a bad
+        // marker is grey: mean errors of tens of codes).
+        let pillow = pillow_decode(&python, &outs[0]);
+        assert_eq!(
+            (pillow.width, pillow.height, pillow.bands),
+            (size.0, size.1, 3)
+        );
+        let mean_error = |samples: &[u8]| {
+            assert_eq!(samples.len(), size.0 * size.1 * 3);
+            let error: f64 = (samples.iter().enumerate())
+                .map(|(i, &v)| (v as f64 - code(i / 3 % size.0, i / 3 / size.0, i % 3)).abs())
+                .sum();
+            error / samples.len() as f64
+        };
+        let error = mean_error(&pillow.samples);
+        assert!(
+            error < 2.0,
+            "quality {quality}: Pillow's mean error {error}"
+        );
+        if let Some(ffmpeg) = peer("ffmpeg") {
+            // Its own upsampling and colour conversion (swscale): other
+            // samples, 3.4 codes off at quality 90.
+            let (samples, said) = ffmpeg_decode(&ffmpeg, &outs[0]);
+            assert!(said.is_empty(), "{said}");
+            let error = mean_error(&samples);
+            assert!(
+                error < 5.0,
+                "quality {quality}: ffmpeg's mean error {error}"
+            );
+        }
+        if let Some(image) = oiio_decode(&outs[0]) {
+            // libjpeg-turbo's samples both: the same.
+            for (i, &v) in pillow.samples.iter().enumerate() {
+                let channel = &image.channels[["R", "G", "B"][i % 3]];
+                assert_eq!(
+                    (channel.get_f32(i / 3) * 255.0).round() as u8,
+                    v,
+                    "sample {i}"
+                );
+            }
+        }
+    }
+}
