@@ -13,6 +13,8 @@ pub mod filetransform;
 pub mod metadata;
 pub mod ociodisplay;
 pub mod ociolook;
+#[cfg(test)]
+mod vendored;
 
 use super::declare::{Args, FileName, Measured, Value, REPEATED};
 use super::grade::{Colour, ColourMap};

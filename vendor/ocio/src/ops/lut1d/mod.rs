@@ -17,6 +17,8 @@ pub(crate) mod cpu;
 mod tests;
 
 pub use self::cpu::order3;
+#[doc(hidden)]
+pub use self::cpu::half_domain_interpolations;
 use self::cpu::Lut1DRenderer;
 use crate::config::Config;
 use crate::context::Context;
