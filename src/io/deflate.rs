@@ -324,6 +324,7 @@ mod tests {
 
     /// The deflate data of `zlib_compress(data)`, without the zlib header
     /// and checksum.
+    #[cfg(isal)]
     fn deflate_data(data: &[u8]) -> Vec<u8> {
         let mut out = Vec::new();
         zlib_compress(data, 2, &mut out);

@@ -24,7 +24,10 @@ fn a_busy_machine_is_no_regression_and_a_slower_build_is_one_even_so() {
     let d = dir.path();
     // 1024x1024: a run is mostly work, not the process starting.
     plates(d, (1024, 1024));
-    let runs = ["--runs", "9", "--tolerance", "5"];
+    // 15%: on CI's two cores a spinning thread per core moved the unchanged
+    // blur's CPU ratio to the floor by -7% in one run and +8% in another,
+    // beyond a 5% tolerance either way (specs/bench.md).
+    let runs = ["--runs", "9", "--tolerance", "15"];
     let base = bench_blur(d, &[&runs[..], &["--json", "base.json"]].concat(), None);
     assert!(base.status.success(), "{}", stderr(&base));
     let against =
@@ -55,11 +58,10 @@ fn a_busy_machine_is_no_regression_and_a_slower_build_is_one_even_so() {
     for ratio in ["ratio", "cpu_ratio"] {
         assert_eq!(floor[ratio]["runs"].as_array().unwrap().len(), 9, "{ratio}");
     }
-    // The blur (not the floor) 40% slower, busy: caught idle and loaded,
-    // beyond a 5% tolerance. (15% was not always caught loaded on CI's two
-    // cores: the load alone moved the CPU ratio by -7%, leaving 1.045x.)
+    // The blur (not the floor) twice as slow, busy: caught idle and loaded,
+    // beyond the 15% tolerance and the load's own ±8%.
     for load in [false, true] {
-        let run = || bench_blur(d, &against("slow.json"), Some("blur:0.40"));
+        let run = || bench_blur(d, &against("slow.json"), Some("blur:1.0"));
         let slow = if load { under_load(run) } else { run() };
         eprintln!(
             "planted, loaded {load}: {:.3?}\n{}",
