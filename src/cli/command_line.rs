@@ -30,11 +30,14 @@ pub fn parse_command(command: &[String]) -> Result<(TaskCommand, String, clap::A
         .try_get_matches_from(argv(&args))
         .and_then(|m| crate::cli::refuse_not_applicable(&m).map(|()| m))
         .map_err(|e| {
+            // clap's first paragraph, on one line: its first line alone
+            // may end in a colon whose list (the arguments missing) follows.
             let message = e.to_string();
-            let first = message.lines().next().unwrap_or_default();
+            let lines = message.lines().map(str::trim);
+            let first: Vec<&str> = lines.take_while(|l| !l.is_empty()).collect();
             Error::usage(format!(
                 "the command to run does not parse: {}",
-                first.trim_start_matches("error: ")
+                first.join(" ").trim_start_matches("error: ")
             ))
         })?;
     let (name, sub) = matches.subcommand().expect("a subcommand is required");

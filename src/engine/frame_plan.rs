@@ -514,7 +514,12 @@ impl Geometry {
         if let Some(message) = super::output_limit::check(job.max_output_pixels, largest, window)
             .filter(|_| spread.size.area() < window.size.area())
         {
-            return Err(Error::usage(format!("frame {frame}: {message}")));
+            // Named by the output it would be: the size is the job's, not an input's.
+            let output = job.output.path(frame);
+            return Err(Error::usage(format!(
+                "frame {frame} ({}): {message}",
+                output.display()
+            )));
         }
         Ok(Geometry {
             read,

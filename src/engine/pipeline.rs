@@ -387,8 +387,12 @@ enum Resumed {
 }
 
 /// Whether `plan`'s output is there, complete (an EXR file whose every
-/// chunk decodes, or a complete review frame: `media::complete`), and made
-/// by this job from these inputs (its fingerprint, `fingerprint.rs`).
+/// chunk decodes, or a complete review frame: `media::complete`), made by
+/// this job from these inputs (its fingerprint, `fingerprint.rs`) and of
+/// the rows this run writes: a band (`--rows`) carries the whole frame's
+/// fingerprint, so a band left where the whole frame or another band goes
+/// (or the whole frame where a band goes) is told by its data window and
+/// band record (`stitch::same_rows`).
 fn resumed(job: &Job, plan: &FramePlan) -> Resumed {
     // A movie is one output, written whole again.
     if job.media.as_ref().is_some_and(|r| r.movie.is_some()) {
@@ -399,7 +403,10 @@ fn resumed(job: &Job, plan: &FramePlan) -> Resumed {
     let complete = || match media {
         Some(format) => media::complete(path, format),
         None => ExrFile::open(path, None).is_ok_and(|file| {
-            (0..file.meta.headers.len()).all(|part| file.check_part(part).is_ok())
+            let (written, found) = (plan.output_parts().headers, &file.meta.headers);
+            written.len() == found.len()
+                && (written.iter().zip(found)).all(|(w, f)| crate::io::stitch::same_rows(f, w))
+                && (0..found.len()).all(|part| file.check_part(part).is_ok())
         }),
     };
     match fingerprint::made_by(path, media, &plan.fingerprint) {

@@ -37,6 +37,14 @@ pub fn erase_band_record(header: &mut Header) {
     }
 }
 
+/// Whether a file's header `found` holds the rows `planned` (the header a
+/// run writes) does: the same data window, and the same band record or
+/// none. `--resume` keeps only such a file (a band's fingerprint is the
+/// whole frame's).
+pub fn same_rows(found: &Header, planned: &Header) -> bool {
+    found.data_window() == planned.data_window() && band_record(found) == band_record(planned)
+}
+
 /// What a band's header says it is a band of: the whole window and frame.
 fn band_record(header: &Header) -> Option<(IntegerBounds, Vec<u8>)> {
     let other = &header.own_attributes.other;

@@ -1739,3 +1739,84 @@ fn openjd_bundles_hold_a_template_and_its_parameter_values() {
 fn stdout(out: &std::process::Output) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
+
+/// `--name` is the job's name as the user gives it, in a template OpenJD
+/// accepts: one holding `{{` goes through a job parameter (the name is a
+/// format string); a name OpenJD refuses (empty, over 128 characters, a
+/// control character) is a usage error, nothing written, not a template
+/// `openjd check` refuses after exit 0.
+#[test]
+fn openjd_job_names_are_the_users_or_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let over = ["over", "fg.####.exr", "bg.####.exr", "-o", "c.####.exr"];
+    let openjd_cli = peer("openjd");
+    let longest = "x".repeat(128);
+    for (i, name) in ["shot {{10}} comp", "über", &longest].iter().enumerate() {
+        let job = format!("ok{i}.yaml");
+        let made = farm_in(
+            d,
+            &[],
+            &["openjd", "--frames", "1-7", "--name", name, "-o", &job],
+            &over,
+        );
+        assert!(made.status.success(), "{name}: {}", stderr(&made));
+        if let Some(openjd_cli) = &openjd_cli {
+            openjd(openjd_cli, &["check", &job], d);
+            let log = openjd(openjd_cli, &["run", &job, "--step", "exrcomp"], d);
+            assert!(log.contains("frame 7 "), "{name}: {log}");
+        }
+    }
+    let too_long = "x".repeat(129);
+    for (i, name) in ["", &too_long, "tab\there", "two\nlines"]
+        .iter()
+        .enumerate()
+    {
+        let job = d.join(format!("bad{i}.yaml"));
+        let made = farm_in(
+            d,
+            &[],
+            &["openjd", "--frames", "1-7", "--name", name, "-o", s(&job)],
+            &over,
+        );
+        assert_eq!(made.status.code(), Some(2), "{name:?}: {}", stderr(&made));
+        let said = stderr(&made);
+        assert!(
+            said.contains("--name") && said.lines().count() == 1,
+            "{said}"
+        );
+        assert!(!job.exists(), "{name:?}: a template was written");
+    }
+}
+
+/// A command that does not parse is refused in one line that says why,
+/// the arguments missing included (clap lists them after a colon).
+#[test]
+fn a_command_that_does_not_parse_is_refused_saying_what_is_missing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    plates(d);
+    let defocus = [
+        "defocus",
+        "bg.####.exr",
+        "--focus",
+        "10",
+        "-o",
+        "c.####.exr",
+    ];
+    let made = farm_in(
+        d,
+        &[],
+        &["openjd", "--frames", "1-2", "-o", "j.yaml"],
+        &defocus,
+    );
+    assert_eq!(made.status.code(), Some(2), "{}", stderr(&made));
+    let said = stderr(&made);
+    assert_eq!(said.lines().count(), 1, "{said}");
+    assert!(
+        said.contains("--scale") && said.contains("--max-radius"),
+        "{said}"
+    );
+    assert!(!d.join("j.yaml").exists());
+}

@@ -1092,6 +1092,9 @@ fn an_output_far_larger_than_the_inputs_is_refused_at_planning() {
                 ended.stderr
             );
             assert_eq!(ended.stderr.lines().count(), 1, "{}", ended.stderr);
+            // The frame and the file it would be.
+            let named = format!(" ({}): the result's", out.display());
+            assert!(ended.stderr.contains(&named), "{}", ended.stderr);
             assert!(!out.exists());
         }
     }

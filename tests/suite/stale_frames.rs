@@ -223,3 +223,43 @@ fn fingerprints_hold_no_state_and_the_farm_warns_of_others() {
         "{said}"
     );
 }
+
+/// Bands (`--rows`) carry the whole frame's fingerprint, so that `stitch`
+/// joins them; `--resume` must still not keep a band where this run writes
+/// the whole frame or another band (16 rows short, exit 0), nor the whole
+/// frame where it writes a band: it keeps a file of the rows it writes.
+#[test]
+fn resume_keeps_only_a_file_of_the_rows_this_run_writes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_sequence(d, "p", 1..=2, 5);
+    let plate = d.join("p.####.exr");
+    let out_dir = d.join("out");
+    let out = out_dir.join("c.####.exr");
+    let blur = |rows: Option<&'static str>| {
+        let mut args = vec!["blur", s(&plate), "--radius", "1"];
+        if let Some(rows) = rows {
+            args.extend(["--rows", rows]);
+        }
+        args
+    };
+    // (left at the output, then run with --resume): each redoes both frames.
+    let cases = [
+        (Some("0-16"), None),
+        (Some("0-16"), Some("16-40")),
+        (Some("0-40"), None),
+        (None, Some("0-16")),
+        (None, Some("0-40")),
+    ];
+    for (i, (before, after)) in cases.into_iter().enumerate() {
+        render(&blur(before), &out, false);
+        let resumed = render(&blur(after), &out, true);
+        let case = format!("{before:?} then {after:?}: {resumed}");
+        assert_eq!(frames(&resumed["redone"]), [1, 2], "{case}");
+        assert_eq!(frames(&resumed["kept"]), Vec::<i64>::new(), "{case}");
+        assert_eq!(folder(&out_dir), fresh(d, &blur(after), &i.to_string()));
+        // The same rows again: kept.
+        let again = render(&blur(after), &out, true);
+        assert_eq!(frames(&again["kept"]), [1, 2], "{case}, again: {again}");
+    }
+}

@@ -263,6 +263,7 @@ pub fn write_job(farm: &Farm, cwd: &Path) -> Result<()> {
     };
     let files = match farm {
         Farm::Openjd(openjd) => {
+            openjd::check_name(&name)?;
             let tasks = Tasks::new(
                 &job.frames,
                 job.chunk,

@@ -220,6 +220,19 @@ impl Parameters {
     }
 }
 
+/// A job's name within OpenJD's limits (jobtemplate-2023-09: 1 to 128
+/// characters, no control character), else a usage error: refused here,
+/// not by `openjd check` or the render manager once the template is out.
+pub fn check_name(name: &str) -> Result<()> {
+    let length = name.chars().count();
+    if (1..=128).contains(&length) && !name.chars().any(char::is_control) {
+        return Ok(());
+    }
+    Err(Error::usage(format!(
+        "--name {name:?}: an OpenJD job's name is 1 to 128 characters, none a control character"
+    )))
+}
+
 /// How an OpenJD job splits its frames into tasks.
 pub enum Tasks {
     /// One STRING task parameter listing the chunks (any OpenJD scheduler).
@@ -396,10 +409,12 @@ pub fn openjd_template(
             },
         },
     };
+    // The name is a format string too.
+    let name = parameters.literal("JobName".into(), name);
     let template = Template {
         specification_version: "jobtemplate-2023-09",
         extensions,
-        name: name.to_string(),
+        name,
         description,
         parameter_definitions: parameters.definitions,
         steps: [step],
