@@ -440,8 +440,81 @@ pub struct Pass {
 }
 
 /// Per output column: the offsets in the input row of its taps, and their
-/// weights.
-type ColumnTaps = Vec<(Vec<usize>, Vec<f32>)>;
+/// weights; and per run of `GROUP` columns, those taps laid out to be
+/// summed together where every column of the run has as many, consecutive
+/// (not at the edges, nor where a tap of weight 0 is left out).
+struct ColumnTaps {
+    columns: Vec<(Vec<usize>, Vec<f32>)>,
+    groups: Vec<Option<Group>>,
+}
+
+/// Columns summed together: eight chains of additions that do not wait on
+/// each other, their products vectorised (the across pass was 23% of the
+/// 4K dailies' instructions, one dependent addition and three bounds checks
+/// a tap).
+const GROUP: usize = 8;
+
+/// `GROUP` columns' taps, each `n` pixels from its `first`: weight `k` of
+/// column `j` at `weights[k * GROUP + j]`.
+struct Group {
+    first: [usize; GROUP],
+    n: usize,
+    weights: Vec<f32>,
+}
+
+impl ColumnTaps {
+    fn new(columns: Vec<(Vec<usize>, Vec<f32>)>) -> Self {
+        let groups = columns.chunks(GROUP).map(Group::of).collect();
+        ColumnTaps { columns, groups }
+    }
+
+    /// Each value the sum of its column's taps in `row`, `w * row[i]`
+    /// added in tap order from -0.0 (as `Iterator::sum`): the same bits
+    /// in a group as alone.
+    fn filter(&self, row: &[f32], values: &mut [f32]) {
+        let runs = values.chunks_mut(GROUP).zip(self.columns.chunks(GROUP));
+        for ((values, columns), group) in runs.zip(&self.groups) {
+            if let Some(group) = group {
+                group.sum(row, values);
+                continue;
+            }
+            for (v, (at, w)) in values.iter_mut().zip(columns) {
+                *v = at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum();
+            }
+        }
+    }
+}
+
+impl Group {
+    fn of(columns: &[(Vec<usize>, Vec<f32>)]) -> Option<Group> {
+        let n = columns.first()?.0.len();
+        let consecutive = |(at, _): &(Vec<usize>, Vec<f32>)| {
+            at.len() == n && at.windows(2).all(|p| p[1] == p[0] + 1)
+        };
+        if columns.len() != GROUP || n == 0 || !columns.iter().all(consecutive) {
+            return None;
+        }
+        Some(Group {
+            first: std::array::from_fn(|j| columns[j].0[0]),
+            n,
+            weights: (0..n)
+                .flat_map(|k| columns.iter().map(move |(_, w)| w[k]))
+                .collect(),
+        })
+    }
+
+    fn sum(&self, row: &[f32], values: &mut [f32]) {
+        let taps: [&[f32]; GROUP] = self.first.map(|f| &row[f..f + self.n]);
+        let mut sums = [-0.0f32; GROUP];
+        for (k, w) in self.weights.chunks_exact(GROUP).enumerate() {
+            let x: [f32; GROUP] = std::array::from_fn(|j| taps[j][k]);
+            for j in 0..GROUP {
+                sums[j] += w[j] * x[j];
+            }
+        }
+        values.copy_from_slice(&sums);
+    }
+}
 
 /// What the taps across depend on besides the geometry: the output's first
 /// column and valid columns, the input's first column and valid columns.
@@ -477,12 +550,13 @@ impl Pass {
 
 impl Op for Pass {
     /// Across: an input row as f32, a row of values and of nearest columns,
-    /// and the columns' taps (shared by the bands: counted with each);
+    /// and the columns' taps, again in groups (shared by the bands: counted
+    /// with each);
     /// down: a row of sums.
     fn scratch(&self, band: &Band) -> usize {
         let taps = self.geometry.get().map_or(1, |g| 2 * g.radius as usize + 1);
         match self.axis {
-            Axis::X => band.widths[0] * 4 + band.width * (12 + 48 + 12 * taps),
+            Axis::X => band.widths[0] * 4 + band.width * (24 + 48 + 16 * taps),
             Axis::Y => band.width * 4 + taps * 4,
         }
     }
@@ -587,7 +661,7 @@ impl Pass {
         let mut weights = Vec::new();
         // The data window's columns, in the picture's coordinates.
         let data = input.x + data.start as i32..input.x + data.end as i32;
-        let taps: ColumnTaps = columns
+        let taps = columns
             .map(|c| {
                 let first = geometry.taps(self.filter, out.x + c as i32, &mut weights);
                 weights
@@ -600,7 +674,7 @@ impl Pass {
                     .unzip()
             })
             .collect();
-        let taps = Arc::new(taps);
+        let taps = Arc::new(ColumnTaps::new(taps));
         *cached = Some((key, taps.clone()));
         taps
     }
@@ -640,9 +714,7 @@ impl Pass {
                     continue;
                 }
                 source.read_f32(input.row_range(y), &mut row);
-                for (v, (at, w)) in values.iter_mut().zip(taps.iter()) {
-                    *v = at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum();
-                }
+                taps.filter(&row, &mut values);
                 plane.write_f32(
                     range.start + columns.start..range.start + columns.end,
                     &values,
@@ -765,5 +837,41 @@ mod tests {
         assert_eq!(fit(pal, (360, 400, 1.09), Fit::Inside), (360, 288, 1.09));
         // A plain resize keeps the ratio.
         assert_eq!(Target::Scale(0.5).pixel_aspect(2.0), 2.0);
+    }
+
+    /// Columns summed in groups give the bits of each summed alone, in
+    /// tap order from -0.0: magnitudes 1e8 apart that partly cancel
+    /// (another order rounds otherwise), a column whose products are all
+    /// -0.0, infinities, NaN.
+    #[test]
+    fn columns_summed_together_give_the_bits_of_one_at_a_time() {
+        let mut row: Vec<f32> = (0..64)
+            .map(|i| (i as f32 * 1.7).sin() * [1.0, 1e8, -1e8][i % 3])
+            .collect();
+        row[16..21].fill(-0.0);
+        row[40] = f32::INFINITY;
+        row[45] = f32::NAN;
+        // 25 columns of 5 taps, two pixels apart: three groups and one
+        // column alone.
+        let columns: Vec<(Vec<usize>, Vec<f32>)> = (0..25)
+            .map(|c| {
+                let w = (0..5).map(|k| 0.1 + ((c * 7 + k) as f32 * 0.61).cos().abs());
+                ((2 * c..2 * c + 5).collect(), w.collect())
+            })
+            .collect();
+        let taps = ColumnTaps::new(columns.clone());
+        let grouped: Vec<bool> = taps.groups.iter().map(Option::is_some).collect();
+        assert_eq!(grouped, [true, true, true, false]);
+        let mut values = vec![0.0; 25];
+        taps.filter(&row, &mut values);
+        let alone = columns
+            .iter()
+            .map(|(at, w)| -> f32 { at.iter().zip(w).map(|(&i, &w)| w * row[i]).sum() });
+        let bits = |v: f32| v.to_bits();
+        assert!(values[8] == 0.0 && values[8].is_sign_negative());
+        assert_eq!(
+            values.iter().map(|&v| bits(v)).collect::<Vec<_>>(),
+            alone.map(bits).collect::<Vec<_>>()
+        );
     }
 }

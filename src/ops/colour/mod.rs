@@ -323,11 +323,23 @@ impl ColourMap for Ocio {
     fn apply(&self, rgb: &mut [Vec<f32>; 3]) {
         // OCIO's pixels are packed RGBA: alpha 1, as PyPI's applyRGB has it
         // (the node's alpha, if any, passes untouched).
+        // Through a buffer on the stack, a run at a time: no allocation
+        // per row. The runs are the processor's own chunks (1024 pixels:
+        // `CpuProcessor::apply_pixels`), so the ops see what they saw with
+        // the row whole.
+        const RUN: usize = 1024;
         let [r, g, b] = rgb;
-        let mut pixels: Vec<[f32; 4]> = (0..r.len()).map(|i| [r[i], g[i], b[i], 1.0]).collect();
-        self.cpu.apply_pixels(&mut pixels);
-        for (i, [pr, pg, pb, _]) in pixels.into_iter().enumerate() {
-            (r[i], g[i], b[i]) = (pr, pg, pb);
+        let mut pixels = [[0.0f32; 4]; RUN];
+        for start in (0..r.len()).step_by(RUN) {
+            let end = (start + RUN).min(r.len());
+            let run = &mut pixels[..end - start];
+            for (i, p) in (start..end).zip(run.iter_mut()) {
+                *p = [r[i], g[i], b[i], 1.0];
+            }
+            self.cpu.apply_pixels(run);
+            for (i, &[pr, pg, pb, _]) in (start..end).zip(run.iter()) {
+                (r[i], g[i], b[i]) = (pr, pg, pb);
+            }
         }
     }
 }
