@@ -704,12 +704,18 @@ fn opaque(rows: &Rows, layer: &Layer, y: i32, columns: Range<usize>) -> bool {
     };
     let start = rows.row_range(y).start;
     let bytes = rows.planes[c].bytes(start + columns.start..start + columns.end);
-    let one: &[u8] = match rows.channels[c].sample_type {
-        SampleType::F16 => &[0x00, 0x3c],
-        SampleType::F32 => &[0x00, 0x00, 0x80, 0x3f],
-        SampleType::U32 => &[1, 0, 0, 0],
-    };
-    bytes.chunks_exact(one.len()).all(|sample| sample == one)
+    match rows.channels[c].sample_type {
+        SampleType::F16 => all_are(bytes, [0x00, 0x3c]),
+        SampleType::F32 => all_are(bytes, [0x00, 0x00, 0x80, 0x3f]),
+        SampleType::U32 => all_are(bytes, [1, 0, 0, 0]),
+    }
+}
+
+/// Whether every `N`-byte sample of `bytes` is `one`: compared as arrays,
+/// one integer compare a sample (as slices, a `memcmp` call each: 15% of a
+/// 4K over-dense frame's instructions).
+fn all_are<const N: usize>(bytes: &[u8], one: [u8; N]) -> bool {
+    bytes.as_chunks::<N>().0.iter().all(|sample| *sample == one)
 }
 
 /// The sample offsets of row `y` from A's first to its last pixel that is
